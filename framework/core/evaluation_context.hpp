@@ -1,0 +1,79 @@
+#pragma once
+// The framework's side of a trial: every fitness evaluation goes through it.
+//
+// It counts evaluations, enforces the budget, keeps the best point and the
+// best-so-far trace, maps NaN/Inf fitness to +inf and hands the optimizer its
+// seeded RNG. Plugins never count anything themselves, so every algorithm is
+// measured the same way.
+#include <Eigen/Core>
+#include <chrono>
+#include <limits>
+#include <vector>
+
+#include "framework/core/budget.hpp"
+#include "framework/core/problem.hpp"
+#include "framework/core/rng.hpp"
+
+namespace hystbench {
+
+struct TracePoint {
+  long evaluations;  // evaluations spent when `best` was first reached
+  double best;       // best-so-far fitness
+};
+
+class EvaluationContext {
+ public:
+  EvaluationContext(const Problem& problem, const Budget& budget, std::uint64_t seed);
+
+  int dimension() const { return problem_.dimension(); }
+  const Bounds& bounds() const { return problem_.bounds(); }
+  Rng& rng() { return rng_; }
+
+  // Evaluates the columns of X into f (resized to X.cols()). Returns how many
+  // columns were evaluated, in order: fewer than X.cols() when the budget ran
+  // out, and the rest of f is +inf. Throws std::logic_error for a point
+  // outside the bounds (a plugin bug).
+  Eigen::Index evaluate(const Eigen::MatrixXd& X, Eigen::VectorXd& f);
+  // One candidate; +inf when the budget is already spent.
+  double evaluate(const Eigen::VectorXd& x);
+
+  // Call at the top of each generation. Returns false when the trial must
+  // stop (any budget reached); otherwise counts one more iteration.
+  bool next_iteration();
+  // True once any budget is reached.
+  bool stopped();
+  // Evaluations still allowed (LONG_MAX without an evaluation budget).
+  long remaining_evaluations() const;
+  // Fraction of the budget used, in [0, 1]: the tau of schedules.
+  double progress() const;
+
+  long evaluations() const { return evaluations_; }
+  long iterations() const { return iterations_; }
+  double best_value() const { return best_value_; }
+  const Eigen::VectorXd& best_point() const { return best_point_; }
+  const std::vector<TracePoint>& trace() const { return trace_; }
+  StopReason stop_reason() const { return stop_reason_; }
+  double elapsed_seconds() const;
+
+  // Called by the harness when the optimizer returns: an optimizer that
+  // ended before any budget did is recorded as "converged".
+  void finish();
+  void fail() { stop_reason_ = StopReason::Failed; }
+
+ private:
+  void record(const Eigen::Ref<const Eigen::VectorXd>& x, double value);
+  void check_budget();
+
+  const Problem& problem_;
+  Budget budget_;
+  Rng rng_;
+  std::chrono::steady_clock::time_point start_;
+  long evaluations_ = 0;
+  long iterations_ = 0;
+  double best_value_ = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd best_point_;
+  std::vector<TracePoint> trace_;
+  StopReason stop_reason_ = StopReason::Running;
+};
+
+}  // namespace hystbench

@@ -1,0 +1,141 @@
+#include "framework/core/parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "framework/core/error.hpp"
+
+namespace hystbench {
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+std::string number_text(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void check_number(const ParamSpec& spec, const nlohmann::json& value,
+                  const std::string& where) {
+  const std::string key = where + "." + spec.name;
+  const bool integral = spec.type == ParamSpec::Type::Integer;
+  if (!value.is_number() || (integral && !value.is_number_integer())) {
+    throw InputError(key + ": expected " + (integral ? "an integer" : "a number") +
+                     ", got " + value.dump());
+  }
+  const double v = value.get<double>();
+  if (!std::isfinite(v) || v < spec.min || v > spec.max) {
+    throw InputError(key + " = " + value.dump() + " is out of range; it must be in [" +
+                     number_text(spec.min) + ", " + number_text(spec.max) + "]");
+  }
+}
+
+void check_value(const ParamSpec& spec, const nlohmann::json& value,
+                 const std::string& where) {
+  const std::string key = where + "." + spec.name;
+  switch (spec.type) {
+    case ParamSpec::Type::Integer:
+    case ParamSpec::Type::Real:
+      check_number(spec, value, where);
+      return;
+    case ParamSpec::Type::Boolean:
+      if (!value.is_boolean())
+        throw InputError(key + ": expected true or false, got " + value.dump());
+      return;
+    case ParamSpec::Type::Choice:
+      if (!value.is_string() ||
+          std::find(spec.choices.begin(), spec.choices.end(), value.get<std::string>()) ==
+              spec.choices.end())
+        throw InputError(key + " = " + value.dump() + " is not valid; choose one of: " +
+                         join(spec.choices));
+      return;
+  }
+}
+
+}  // namespace
+
+ParamSpec ParamSpec::integer(std::string name, nlohmann::json default_value, double min,
+                             double max, std::string doc) {
+  return {std::move(name), Type::Integer, std::move(default_value), min, max, {}, std::move(doc)};
+}
+
+ParamSpec ParamSpec::real(std::string name, nlohmann::json default_value, double min,
+                          double max, std::string doc) {
+  return {std::move(name), Type::Real, std::move(default_value), min, max, {}, std::move(doc)};
+}
+
+ParamSpec ParamSpec::choice(std::string name, std::string default_value,
+                            std::vector<std::string> choices, std::string doc) {
+  return {std::move(name), Type::Choice, std::move(default_value), 0, 0, std::move(choices),
+          std::move(doc)};
+}
+
+ParamSpec ParamSpec::boolean(std::string name, bool default_value, std::string doc) {
+  return {std::move(name), Type::Boolean, default_value, 0, 0, {}, std::move(doc)};
+}
+
+std::string ParamSpec::describe_range() const {
+  const std::string def = default_value.is_null() ? "auto" : default_value.dump();
+  switch (type) {
+    case Type::Integer:
+      return "integer in [" + number_text(min) + ", " + number_text(max) + "], default " + def;
+    case Type::Real:
+      return "real in [" + number_text(min) + ", " + number_text(max) + "], default " + def;
+    case Type::Boolean:
+      return "true/false, default " + def;
+    case Type::Choice:
+      return "one of {" + join(choices) + "}, default " + def;
+  }
+  return def;
+}
+
+bool Params::is_auto(const std::string& key) const { return at(key).is_null(); }
+int Params::integer(const std::string& key) const { return at(key).get<int>(); }
+double Params::real(const std::string& key) const { return at(key).get<double>(); }
+std::string Params::text(const std::string& key) const { return at(key).get<std::string>(); }
+bool Params::boolean(const std::string& key) const { return at(key).get<bool>(); }
+
+const nlohmann::json& Params::at(const std::string& key) const {
+  auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("plugin asked for undeclared parameter '" + key + "'");
+  return *it;
+}
+
+void require_known_keys(const nlohmann::json& object, const std::vector<std::string>& allowed,
+                        const std::string& where) {
+  if (!object.is_object()) throw InputError(where + ": expected a JSON object, got " + object.dump());
+  for (const auto& [key, value] : object.items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      throw InputError(where + ": unknown key '" + key + "'; valid keys: " + join(allowed));
+    }
+  }
+}
+
+Params validate_params(const std::vector<ParamSpec>& specs, const nlohmann::json& given,
+                       const std::string& where) {
+  const nlohmann::json input = given.is_null() ? nlohmann::json::object() : given;
+  std::vector<std::string> names;
+  for (const auto& s : specs) names.push_back(s.name);
+  require_known_keys(input, names, where);
+
+  nlohmann::json values = nlohmann::json::object();
+  for (const auto& spec : specs) {
+    auto it = input.find(spec.name);
+    if (it == input.end() || (it->is_null() && spec.default_value.is_null())) {
+      values[spec.name] = spec.default_value;
+      continue;
+    }
+    check_value(spec, *it, where);
+    values[spec.name] = *it;
+  }
+  return Params(std::move(values));
+}
+
+}  // namespace hystbench

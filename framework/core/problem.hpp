@@ -1,0 +1,50 @@
+#pragma once
+// A problem is "bounds + batch fitness": everything an optimizer may know.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace hystbench {
+
+// The search box. Components are named so that tables and JSON can say which
+// parameter a value belongs to.
+struct Bounds {
+  Eigen::VectorXd lower;
+  Eigen::VectorXd upper;
+  std::vector<std::string> names;
+
+  int dimension() const { return static_cast<int>(lower.size()); }
+  bool contains(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+};
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+
+  // Short identifier for reports, e.g. "hammerstein(default.csv)".
+  virtual std::string name() const = 0;
+  virtual const Bounds& bounds() const = 0;
+  // Fitness of each column of X (dimension x n candidates) into f (size n).
+  // Must be safe to call from several threads at once. May return NaN or
+  // Inf; the evaluation context maps those to +inf.
+  virtual void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                        Eigen::Ref<Eigen::VectorXd> f) const = 0;
+  // Facts for summary.json: data file, known optimum, noise floor, ...
+  virtual nlohmann::json describe() const { return {{"name", name()}}; }
+
+  int dimension() const { return bounds().dimension(); }
+};
+
+// Optional capability of problems whose candidates are models of a measured
+// signal: the harness uses it to draw model-vs-measurement figures.
+class SignalModelProblem {
+ public:
+  virtual ~SignalModelProblem() = default;
+  virtual const Eigen::VectorXd& time() const = 0;
+  virtual const Eigen::VectorXd& input() const = 0;
+  virtual const Eigen::VectorXd& measured() const = 0;
+  virtual Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const = 0;
+};
+
+}  // namespace hystbench

@@ -1,0 +1,25 @@
+#include "framework/core/registry.hpp"
+
+#include "framework/core/error.hpp"
+
+namespace hystbench {
+
+template <class Info>
+const Info& Registry<Info>::find(const std::string& name, const std::string& what) const {
+  auto it = entries_.find(name);
+  if (it != entries_.end()) return it->second;
+  std::string known;
+  for (const auto& [key, info] : entries_) known += (known.empty() ? "" : ", ") + key;
+  throw InputError(what + ": unknown name '" + name + "'; known: " + known);
+}
+
+template class Registry<OptimizerInfo>;
+template class Registry<ProblemInfo>;
+
+std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohmann::json& params,
+                                          const std::string& where) {
+  const OptimizerInfo& info = OptimizerRegistry::instance().find(name, where + ".name");
+  return info.create(validate_params(info.params, params, where + ".params"));
+}
+
+}  // namespace hystbench

@@ -1,0 +1,103 @@
+#pragma once
+// Name -> factory tables for plugins, filled at static-initialisation time by
+// one macro per plugin:
+//
+//   class MyOptimizer : public hystbench::Optimizer {
+//    public:
+//     static hystbench::OptimizerInfo describe();   // name, parameters, citation
+//     explicit MyOptimizer(const hystbench::Params& params);
+//     void run(hystbench::EvaluationContext& ctx) override;
+//   };
+//   HYSTBENCH_OPTIMIZER(MyOptimizer)
+//
+// Problems register the same way with HYSTBENCH_PROBLEM.
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/core/optimizer.hpp"
+#include "framework/core/parameters.hpp"
+#include "framework/core/problem.hpp"
+
+namespace hystbench {
+
+struct OptimizerInfo {
+  std::string name;      // registry key, as written in experiment files
+  std::string summary;   // one line
+  std::string citation;  // reference; say here what is a reconstruction
+  std::vector<ParamSpec> params;
+  std::function<std::unique_ptr<Optimizer>(const Params&)> create;
+};
+
+struct ProblemInfo {
+  std::string name;
+  std::string summary;
+  std::vector<std::string> keys;  // keys the problem's JSON object accepts
+  // Builds from the experiment's "problem" object; relative paths are
+  // resolved against `base_dir` when they do not exist as given.
+  std::function<std::unique_ptr<Problem>(const nlohmann::json& spec,
+                                         const std::filesystem::path& base_dir)>
+      create;
+};
+
+template <class Info>
+class Registry {
+ public:
+  static Registry& instance() {
+    static Registry registry;
+    return registry;
+  }
+  void add(Info info) { entries_[info.name] = std::move(info); }
+  // Throws InputError naming the known entries.
+  const Info& find(const std::string& name, const std::string& what) const;
+  std::vector<const Info*> all() const {
+    std::vector<const Info*> out;
+    for (const auto& [name, info] : entries_) out.push_back(&info);
+    return out;
+  }
+
+ private:
+  std::map<std::string, Info> entries_;
+};
+
+using OptimizerRegistry = Registry<OptimizerInfo>;
+using ProblemRegistry = Registry<ProblemInfo>;
+
+// Validates `params` against the plugin's declared list and builds it.
+std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohmann::json& params,
+                                          const std::string& where);
+
+namespace detail {
+template <class T>
+struct OptimizerRegistration {
+  OptimizerRegistration() {
+    OptimizerInfo info = T::describe();
+    info.create = [](const Params& p) { return std::make_unique<T>(p); };
+    OptimizerRegistry::instance().add(std::move(info));
+  }
+};
+template <class T>
+struct ProblemRegistration {
+  ProblemRegistration() { ProblemRegistry::instance().add(T::describe()); }
+};
+}  // namespace detail
+
+}  // namespace hystbench
+
+#define HYSTBENCH_CONCAT_INNER(a, b) a##b
+#define HYSTBENCH_CONCAT(a, b) HYSTBENCH_CONCAT_INNER(a, b)
+
+#define HYSTBENCH_OPTIMIZER(Class)                                                 \
+  namespace {                                                                      \
+  const ::hystbench::detail::OptimizerRegistration<Class> HYSTBENCH_CONCAT(        \
+      hystbench_optimizer_registration_, __LINE__);                                \
+  }
+
+#define HYSTBENCH_PROBLEM(Class)                                                   \
+  namespace {                                                                      \
+  const ::hystbench::detail::ProblemRegistration<Class> HYSTBENCH_CONCAT(          \
+      hystbench_problem_registration_, __LINE__);                                  \
+  }

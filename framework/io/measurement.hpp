@@ -1,0 +1,49 @@
+#pragma once
+// Measurement records: time t, input u, output y, optional segment label.
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace hystbench {
+
+struct Measurement {
+  Eigen::VectorXd t;
+  Eigen::VectorXd u;
+  Eigen::VectorXd y;
+  std::vector<std::string> segment;  // one label per sample, or empty
+  double sample_time = 0.0;          // inferred from t
+  std::string source;                // file it was read from
+
+  Eigen::Index size() const { return t.size(); }
+};
+
+// Which header names hold t, u, y and segment.
+struct ColumnMap {
+  std::string t = "t";
+  std::string u = "u";
+  std::string y = "y";
+  std::string segment = "segment";
+
+  // "t=t_s,u=u_N,y=y_m" (any subset, any order). Throws InputError naming
+  // the bad entry and the valid roles (t, u, y, segment).
+  static ColumnMap parse(const std::string& spec);
+  // {"t": "t_s", "u": "u_N", "y": "y_m"}; `where` names the JSON key.
+  static ColumnMap from_json(const nlohmann::json& j, const std::string& where);
+  nlohmann::json to_json() const;
+};
+
+// Reads a measurement CSV (DESIGN.md §6). Throws InputError naming the file,
+// line and column for: missing file, empty file, missing column, duplicate
+// column, non-numeric or non-finite value, ragged row, time not increasing
+// or not evenly sampled, fewer than two samples. Accepts a UTF-8 BOM, CRLF
+// line ends, quoted fields, extra columns and '#' comment lines.
+Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns = {});
+
+// Writes t,u,y[,segment] with 17 significant digits; `comments` become '#'
+// lines at the top.
+void write_measurement(const std::filesystem::path& path, const Measurement& m,
+                       const std::vector<std::string>& comments = {});
+
+}  // namespace hystbench

@@ -1,0 +1,18 @@
+#pragma once
+// What every table caption and figure title needs to say about a run.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+namespace hystbench {
+
+struct ReportContext {
+  std::string experiment;          // experiment name
+  std::string problem;             // Problem::name()
+  std::string budget;              // human-readable, e.g. "5000 evaluations"
+  long trials = 0;                 // trials per algorithm
+  std::uint64_t seed = 0;
+  std::optional<double> noise_floor;  // SSE of the true parameters, when known
+};
+
+}  // namespace hystbench
