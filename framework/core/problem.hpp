@@ -44,6 +44,8 @@ class SignalModelProblem {
   virtual const Eigen::VectorXd& time() const = 0;
   virtual const Eigen::VectorXd& input() const = 0;
   virtual const Eigen::VectorXd& measured() const = 0;
+  // One label per sample (e.g. "sine_5Hz"), or empty.
+  virtual const std::vector<std::string>& segments() const = 0;
   virtual Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const = 0;
 };
 

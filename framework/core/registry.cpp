@@ -23,3 +23,13 @@ std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohman
 }
 
 }  // namespace hystbench
+
+namespace hystbench {
+
+std::unique_ptr<Problem> make_problem(const nlohmann::json& spec,
+                                      const std::filesystem::path& base_dir) {
+  const auto& info = ProblemRegistry::instance().find(spec.value("type", ""), "problem.type");
+  return info.create(spec, base_dir);
+}
+
+}  // namespace hystbench

@@ -4,7 +4,7 @@
 //
 //   class MyOptimizer : public hystbench::Optimizer {
 //    public:
-//     static hystbench::OptimizerInfo describe();   // name, parameters, citation
+//     static hystbench::OptimizerInfo info();   // name, parameters, citation
 //     explicit MyOptimizer(const hystbench::Params& params);
 //     void run(hystbench::EvaluationContext& ctx) override;
 //   };
@@ -74,14 +74,14 @@ namespace detail {
 template <class T>
 struct OptimizerRegistration {
   OptimizerRegistration() {
-    OptimizerInfo info = T::describe();
+    OptimizerInfo info = T::info();
     info.create = [](const Params& p) { return std::make_unique<T>(p); };
     OptimizerRegistry::instance().add(std::move(info));
   }
 };
 template <class T>
 struct ProblemRegistration {
-  ProblemRegistration() { ProblemRegistry::instance().add(T::describe()); }
+  ProblemRegistration() { ProblemRegistry::instance().add(T::info()); }
 };
 }  // namespace detail
 
@@ -101,3 +101,9 @@ struct ProblemRegistration {
   const ::hystbench::detail::ProblemRegistration<Class> HYSTBENCH_CONCAT(          \
       hystbench_problem_registration_, __LINE__);                                  \
   }
+
+namespace hystbench {
+// Builds the problem described by an experiment's "problem" object.
+std::unique_ptr<Problem> make_problem(const nlohmann::json& spec,
+                                      const std::filesystem::path& base_dir);
+}  // namespace hystbench

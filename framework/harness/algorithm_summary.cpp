@@ -1,4 +1,5 @@
 #include "framework/harness/algorithm_summary.hpp"
+#include "framework/io/json_number.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +8,6 @@
 #include "framework/stats/descriptive.hpp"
 
 namespace hystbench {
-namespace {
-
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
-}  // namespace
 
 AlgorithmSummary summarize(const std::string& label, const std::string& name,
                            const nlohmann::json& params,

@@ -1,18 +1,10 @@
 #include "framework/harness/trial_result.hpp"
+#include "framework/io/json_number.hpp"
 
 #include <cmath>
 #include <limits>
 
 namespace hystbench {
-namespace {
-
-// JSON has no infinity: a fitness of +inf is written as null.
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-double number_or_inf(const nlohmann::json& j) {
-  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
-}
-
-}  // namespace
 
 nlohmann::json TrialResult::to_json() const {
   nlohmann::json trace_json = nlohmann::json::array();

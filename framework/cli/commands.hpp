@@ -1,0 +1,15 @@
+#pragma once
+// The subcommands of `hystbench`. Each registers its options on the app and
+// returns the function that runs it.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace hystbench::cli {
+
+using Action = std::function<void()>;
+
+Action add_list_command(CLI::App& app);
+Action add_run_command(CLI::App& app);
+Action add_simulate_command(CLI::App& app);
+
+}  // namespace hystbench::cli

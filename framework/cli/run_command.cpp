@@ -1,0 +1,90 @@
+#include <omp.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "framework/cli/commands.hpp"
+#include "framework/core/error.hpp"
+#include "framework/core/registry.hpp"
+#include "framework/harness/campaign.hpp"
+#include "framework/harness/progress.hpp"
+#include "framework/io/trial_log.hpp"
+#include "framework/report/results_folder.hpp"
+
+namespace hystbench::cli {
+namespace {
+
+struct RunOptions {
+  std::string experiment, out;
+  int threads = 0;
+  long trials = 0;
+  long long seed = -1;
+  bool force = false;
+};
+
+// Refuses to mix a new run into old results unless asked to.
+void prepare_output_folder(const std::filesystem::path& dir, bool force) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw InputError("--out " + dir.string() + ": exists and is not a folder");
+  if (fs::exists(dir / "trials.jsonl")) {
+    if (!force)
+      throw InputError("--out " + dir.string() + ": already holds results; pass --force to replace "
+                       "them or choose another folder with --out");
+    fs::remove(dir / "trials.jsonl", ec);
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir.string() + ": cannot create this folder: " + ec.message());
+}
+
+void print_outcome(const std::filesystem::path& dir, const WrittenReport& report) {
+  std::ifstream table(dir / "table.md");
+  std::cout << "\n" << table.rdbuf() << "\n";
+  std::cout << "Results in " << dir.string() << ":\n";
+  for (const auto& f : report.files) std::cout << "  " << f.string() << "\n";
+  for (const auto& f : report.figures) std::cout << "  " << f.string() << "\n";
+  if (!report.note.empty()) std::cout << report.note << "\n";
+}
+
+void run(const RunOptions& o) {
+  Experiment experiment = Experiment::load(o.experiment);
+  if (o.trials > 0) experiment.trials = o.trials;
+  if (o.seed >= 0) experiment.seed = static_cast<std::uint64_t>(o.seed);
+  const auto problem = make_problem(experiment.problem, experiment.base_dir);
+  const std::filesystem::path dir = o.out.empty() ? "out/" + experiment.name : o.out;
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+
+  prepare_output_folder(dir, o.force);
+  TrialLog log(dir / "trials.jsonl");
+  Progress progress(experiment.trials * long(experiment.algorithms.size()), stderr_is_terminal());
+  std::cerr << "Running " << experiment.name << ": " << experiment.algorithms.size() << " algorithm(s) x "
+            << experiment.trials << " trials on " << problem->name() << ", " << threads << " thread(s)\n";
+  const auto results = run_campaign(*problem, experiment,
+                                    {threads, [&](const TrialResult& r) {
+                                       log.append(r);
+                                       progress.trial_done(r);
+                                     }});
+  progress.finish();
+  print_outcome(dir, write_report(dir, experiment, *problem, results, threads));
+}
+
+}  // namespace
+
+Action add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  auto* cmd = app.add_subcommand("run", "Run an experiment file: seeded trials of each algorithm, "
+                                        "then tables, convergence curves and figures");
+  cmd->add_option("experiment", o->experiment, "experiment JSON file")->required();
+  cmd->add_option("--out", o->out, "results folder (default: out/<experiment name>)");
+  cmd->add_option("--threads", o->threads, "trials run in parallel (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--trials", o->trials, "override the experiment's number of trials")
+      ->check(CLI::Range(1L, 1000000L));
+  cmd->add_option("--seed", o->seed, "override the experiment's seed")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--force", o->force, "replace results already in the --out folder");
+  return [o] { run(*o); };
+}
+
+}  // namespace hystbench::cli

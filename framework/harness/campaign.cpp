@@ -1,0 +1,40 @@
+#include "framework/harness/campaign.hpp"
+
+#include <omp.h>
+
+#include <exception>
+
+#include "framework/harness/trial_runner.hpp"
+
+namespace hystbench {
+
+std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
+                                                   const Experiment& experiment,
+                                                   const CampaignOptions& options) {
+  const int algorithms = static_cast<int>(experiment.algorithms.size());
+  const long tasks = algorithms * experiment.trials;
+  std::vector<std::vector<TrialResult>> results(algorithms,
+                                                std::vector<TrialResult>(experiment.trials));
+  std::exception_ptr callback_error;
+
+  #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
+  for (long task = 0; task < tasks; ++task) {
+    const int a = static_cast<int>(task / experiment.trials);
+    const long trial = task % experiment.trials;
+    TrialResult r = run_trial(problem, experiment, a, trial);
+    #pragma omp critical(hystbench_trial_done)
+    {
+      // An exception must not leave an OpenMP region; keep the first.
+      try {
+        if (options.on_trial_done && !callback_error) options.on_trial_done(r);
+      } catch (...) {
+        callback_error = std::current_exception();
+      }
+      results[a][trial] = std::move(r);
+    }
+  }
+  if (callback_error) std::rethrow_exception(callback_error);
+  return results;
+}
+
+}  // namespace hystbench

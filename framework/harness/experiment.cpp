@@ -1,0 +1,103 @@
+#include "framework/harness/experiment.hpp"
+
+#include <fstream>
+#include <set>
+
+#include "framework/core/error.hpp"
+#include "framework/core/parameters.hpp"
+#include "framework/core/registry.hpp"
+
+namespace hystbench {
+namespace {
+
+const nlohmann::json& required(const nlohmann::json& j, const std::string& key) {
+  if (!j.contains(key)) throw InputError("missing key \"" + key + "\"");
+  return j.at(key);
+}
+
+long positive_integer(const nlohmann::json& v, const std::string& key) {
+  if (!v.is_number_integer() || v.get<long>() <= 0)
+    throw InputError(key + " = " + v.dump() + ": must be a positive integer");
+  return v.get<long>();
+}
+
+AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
+  const std::string where = "algorithms[" + std::to_string(index) + "]";
+  require_known_keys(a, {"name", "label", "params"}, where);
+  if (!a.contains("name") || !a["name"].is_string())
+    throw InputError(where + ".name: missing; give the optimizer's name (see `hystbench list`)");
+  AlgorithmSpec spec;
+  spec.name = a["name"].get<std::string>();
+  spec.label = a.value("label", spec.name);
+  const auto& info = OptimizerRegistry::instance().find(spec.name, where + ".name");
+  const auto given = a.value("params", nlohmann::json::object());
+  spec.params = validate_params(info.params, given, where + " (" + spec.label + ").params").json();
+  return spec;
+}
+
+void check_problem(const nlohmann::json& problem) {
+  if (!problem.is_object() || !problem.contains("type") || !problem["type"].is_string())
+    throw InputError("problem.type: missing; e.g. \"hammerstein\" or \"function\"");
+  const auto& info = ProblemRegistry::instance().find(problem["type"].get<std::string>(), "problem.type");
+  require_known_keys(problem, info.keys, "problem");
+}
+
+}  // namespace
+
+Experiment Experiment::from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    require_known_keys(j, {"name", "description", "problem", "budget", "trials", "seed", "algorithms"},
+                       "top level");
+    Experiment e;
+    const auto& name = required(j, "name");
+    if (!name.is_string() || name.get<std::string>().empty())
+      throw InputError("name: expected a non-empty string");
+    e.name = name.get<std::string>();
+    e.description = j.value("description", "");
+    e.problem = required(j, "problem");
+    check_problem(e.problem);
+    e.budget = Budget::from_json(required(j, "budget"), "budget");
+    e.trials = positive_integer(required(j, "trials"), "trials");
+    const auto seed = j.value("seed", nlohmann::json(1));
+    if (!seed.is_number_unsigned()) throw InputError("seed = " + seed.dump() + ": must be a non-negative integer");
+    e.seed = seed.get<std::uint64_t>();
+    const auto& algorithms = required(j, "algorithms");
+    if (!algorithms.is_array() || algorithms.empty())
+      throw InputError("algorithms: expected a non-empty list of {\"name\": ..., \"params\": {...}}");
+    std::set<std::string> labels;
+    for (std::size_t i = 0; i < algorithms.size(); ++i) {
+      e.algorithms.push_back(read_algorithm(algorithms[i], i));
+      if (!labels.insert(e.algorithms.back().label).second)
+        throw InputError("algorithms[" + std::to_string(i) + "].label \"" + e.algorithms.back().label +
+                         "\" is used twice; give each algorithm a distinct label");
+    }
+    return e;
+  } catch (const InputError& err) {
+    throw InputError(where + ": " + err.what());
+  }
+}
+
+Experiment Experiment::load(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot open the experiment file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& err) {
+    throw InputError(file.string() + ": not valid JSON: " + err.what());
+  }
+  Experiment e = from_json(j, file.string());
+  e.base_dir = file.parent_path();
+  return e;
+}
+
+nlohmann::json Experiment::to_json() const {
+  nlohmann::json algs = nlohmann::json::array();
+  for (const auto& a : algorithms) algs.push_back({{"name", a.name}, {"label", a.label}, {"params", a.params}});
+  nlohmann::json j = {{"name", name},       {"problem", problem}, {"budget", budget.to_json()},
+                      {"trials", trials},   {"seed", seed},       {"algorithms", algs}};
+  if (!description.empty()) j["description"] = description;
+  return j;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,43 @@
+#pragma once
+// An experiment file: which problem, which algorithms, what budget, how many
+// seeded trials. Everything is validated on load, before any output exists.
+//
+//   {"name": "demo",
+//    "problem": {"type": "hammerstein", "data": "problems/hammerstein/data/default.csv"},
+//    "budget": {"evaluations": 5000},
+//    "trials": 10, "seed": 1,
+//    "algorithms": [{"name": "de", "label": "DE", "params": {"np": 50}}]}
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "framework/core/budget.hpp"
+
+namespace hystbench {
+
+struct AlgorithmSpec {
+  std::string name;       // plugin name
+  std::string label;      // unique within the experiment; defaults to name
+  nlohmann::json params;  // validated, defaults filled in
+};
+
+struct Experiment {
+  std::string name;
+  std::string description;
+  nlohmann::json problem;  // the "problem" object, checked against its registry entry
+  Budget budget;
+  long trials = 0;
+  std::uint64_t seed = 0;
+  std::vector<AlgorithmSpec> algorithms;
+  std::filesystem::path base_dir;  // folder of the experiment file
+
+  // Throws InputError whose message starts with the file name.
+  static Experiment load(const std::filesystem::path& file);
+  // `where` prefixes messages (the file name, or "experiment").
+  static Experiment from_json(const nlohmann::json& j, const std::string& where);
+  nlohmann::json to_json() const;
+};
+
+}  // namespace hystbench

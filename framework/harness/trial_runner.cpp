@@ -1,0 +1,38 @@
+#include "framework/harness/trial_runner.hpp"
+
+#include <exception>
+
+#include "framework/core/registry.hpp"
+
+namespace hystbench {
+
+TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
+                      long trial) {
+  const AlgorithmSpec& spec = experiment.algorithms[algorithm_index];
+  TrialResult r;
+  r.label = spec.label;
+  r.algorithm_index = algorithm_index;
+  r.trial = trial;
+  r.seed = trial_seed(experiment.seed, spec.label, static_cast<std::uint64_t>(trial));
+
+  EvaluationContext ctx(problem, experiment.budget, r.seed);
+  try {
+    const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
+    auto optimizer = info.create(Params(spec.params));
+    optimizer->run(ctx);
+    ctx.finish();
+  } catch (const std::exception& e) {
+    ctx.fail();
+    r.message = e.what();
+  }
+  r.best = ctx.best_value();
+  r.evaluations = ctx.evaluations();
+  r.iterations = ctx.iterations();
+  r.stop = ctx.stop_reason();
+  r.best_x.assign(ctx.best_point().begin(), ctx.best_point().end());
+  r.trace = ctx.trace();
+  r.wall_seconds = ctx.elapsed_seconds();
+  return r;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,14 @@
+#pragma once
+// Where a file named in an experiment lives: as given (relative to the
+// current folder), else relative to the experiment file's folder.
+#include <filesystem>
+#include <string>
+
+namespace hystbench {
+
+// Throws InputError naming `key` and both places looked in.
+std::filesystem::path resolve_data_path(const std::string& name,
+                                        const std::filesystem::path& base_dir,
+                                        const std::string& key);
+
+}  // namespace hystbench

@@ -1,0 +1,97 @@
+#include "framework/report/convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "framework/io/atomic_file.hpp"
+#include "framework/stats/descriptive.hpp"
+
+namespace hystbench {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+long last_evaluation(const TrialResult& r) {
+  const long traced = r.trace.empty() ? 0 : r.trace.back().evaluations;
+  return std::max(r.evaluations, traced);
+}
+
+// Log-spaced so that the early, fast-moving part of a run is resolved as
+// well as the long tail; rounding to whole evaluations can repeat a value,
+// so repeats are dropped.
+std::vector<long> log_grid(long last, int points) {
+  std::vector<long> grid;
+  if (last < 1) return grid;
+  const int n = std::max(points, 2);
+  const double log_last = std::log(double(last));
+  for (int i = 0; i < n; ++i) {
+    const long v = std::clamp(std::lround(std::exp(log_last * i / (n - 1))), 1L, last);
+    if (grid.empty() || v > grid.back()) grid.push_back(v);
+  }
+  if (grid.back() != last) grid.push_back(last);
+  return grid;
+}
+
+// The trace holds improvements only, so the best so far at `evaluations`
+// is the last point reached by then.
+double best_so_far(const std::vector<TracePoint>& trace, long evaluations) {
+  const auto after = std::upper_bound(
+      trace.begin(), trace.end(), evaluations,
+      [](long e, const TracePoint& p) { return e < p.evaluations; });
+  return after == trace.begin() ? kInf : std::prev(after)->best;
+}
+
+std::string csv_number(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  if (std::isnan(x)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+ConvergenceCurve convergence_curve(const std::string& label,
+                                   const std::vector<TrialResult>& trials, int points) {
+  std::vector<const TrialResult*> ok;
+  long last = 0;
+  for (const auto& r : trials) {
+    if (r.failed()) continue;
+    ok.push_back(&r);
+    last = std::max(last, last_evaluation(r));
+  }
+  ConvergenceCurve curve;
+  curve.label = label;
+  curve.evaluations = log_grid(last, points);
+  std::vector<double> values(ok.size());
+  for (long e : curve.evaluations) {
+    for (std::size_t i = 0; i < ok.size(); ++i) values[i] = best_so_far(ok[i]->trace, e);
+    curve.q25.push_back(stats::quantile(values, 0.25));
+    curve.median.push_back(stats::quantile(values, 0.5));
+    curve.q75.push_back(stats::quantile(values, 0.75));
+  }
+  return curve;
+}
+
+void write_convergence_csv(const std::filesystem::path& path,
+                           const std::vector<ConvergenceCurve>& curves) {
+  std::string out = "label,evaluations,q25,median,q75\n";
+  for (const auto& c : curves) {
+    const std::string label = csv_field(c.label);
+    for (std::size_t i = 0; i < c.evaluations.size(); ++i)
+      out += label + "," + std::to_string(c.evaluations[i]) + "," + csv_number(c.q25[i]) + "," +
+             csv_number(c.median[i]) + "," + csv_number(c.q75[i]) + "\n";
+  }
+  write_file_atomic(path, out);
+}
+
+}  // namespace hystbench

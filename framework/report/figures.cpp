@@ -1,0 +1,404 @@
+#include "framework/report/figures.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "framework/io/atomic_file.hpp"
+
+namespace hystbench {
+namespace fs = std::filesystem;
+namespace {
+
+// Okabe–Ito colours: distinguishable with the common colour-vision
+// deficiencies and still distinct when printed in grey.
+constexpr const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
+                                    "#E69F00", "#56B4E9", "#000000"};
+constexpr int kPaletteSize = sizeof kPalette / sizeof kPalette[0];
+constexpr const char* kModelColour = "#0072B2";
+constexpr const char* kMeasuredColour = "#707070";
+constexpr const char* kResidualColour = "#D55E00";
+// More loop panels than this no longer fit a page legibly.
+constexpr std::size_t kMaxLoopPanels = 9;
+
+// A double-quoted gnuplot string. Every user-supplied text is also drawn
+// `noenhanced`, so '_' or '^' in a label are not read as markup.
+std::string gp_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return out + "\"";
+}
+
+std::string number(double x) {
+  if (!std::isfinite(x)) return "NaN";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+std::string csv_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string file_label(const std::string& label) {
+  std::string out;
+  for (char c : label)
+    out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') ? c : '_';
+  return out.empty() ? "algorithm" : out;
+}
+
+std::string script_header(const std::string& name, const std::string& shows,
+                          const std::string& reads) {
+  return "# " + name + ".gp: " + shows + "\n#\n# Reads " + reads +
+         ".\n# Re-render after editing: run `gnuplot " + name +
+         ".gp` inside this folder; it writes\n# " + name + ".svg, " + name + ".png and " + name +
+         ".pdf. The plot commands appear once, inside the\n# loop over the three output "
+         "formats at the end.\n\nset encoding utf8\n";
+}
+
+// The same plot commands run once per output format, so a restyled script
+// keeps the three images identical.
+std::string render_all_terminals(const std::string& name, const std::string& body) {
+  return "\ndo for [ext in \"svg png pdf\"] {\n"
+         "  if (ext eq \"svg\") { set terminal svg size 900,560 font \"Helvetica,12\" "
+         "background rgb \"white\" }\n"
+         "  if (ext eq \"png\") { set terminal pngcairo size 900,560 font \"Helvetica,11\" }\n"
+         "  if (ext eq \"pdf\") { set terminal pdfcairo size 6in,3.75in font \"Helvetica,10\" }\n"
+         "  set output \"" + name + ".\".ext\n" + body + "}\nunset output\n";
+}
+
+fs::path write_script(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path path = dir / (name + ".gp");
+  write_file_atomic(path, text);
+  return path;
+}
+
+// ---- convergence ----------------------------------------------------------
+
+bool has_finite_median(const ConvergenceCurve& c) {
+  return std::any_of(c.median.begin(), c.median.end(), [](double m) { return std::isfinite(m); });
+}
+
+// gnuplot index blocks: per curve, the rows with a finite median (the
+// line) and then, when there are any, the rows with a finite upper quartile
+// (the band; filledcurves draws nonsense through undefined points).
+struct ConvergenceData {
+  std::string text;
+  std::vector<int> line_block, band_block;  // per curve; band -1 when empty
+};
+
+int add_block(ConvergenceData& d, const std::string& title, const std::string& rows) {
+  const int index = int(d.line_block.size() + d.band_block.size());
+  d.text += (index ? "\n\n" : "") + std::string("# index ") + std::to_string(index) + ": " +
+            title + "\n# evaluations q25 median q75\n" + rows;
+  return index;
+}
+
+ConvergenceData convergence_data(const std::vector<const ConvergenceCurve*>& curves) {
+  ConvergenceData d;
+  for (const auto* c : curves) {
+    std::string line, band;
+    for (std::size_t i = 0; i < c->evaluations.size(); ++i) {
+      if (!std::isfinite(c->median[i])) continue;
+      const std::string row = std::to_string(c->evaluations[i]) + " " + number(c->q25[i]) + " " +
+                              number(c->median[i]) + " " + number(c->q75[i]) + "\n";
+      line += row;
+      if (std::isfinite(c->q75[i])) band += row;
+    }
+    d.line_block.push_back(add_block(d, c->label + " (median line)", line));
+    d.band_block.push_back(band.empty() ? -1 : add_block(d, c->label + " (quartile band)", band));
+  }
+  return d;
+}
+
+// Decade labels read best, but a range narrower than a decade would have
+// none, so gnuplot's own labels are kept there.
+bool spans_a_decade(const std::vector<const ConvergenceCurve*>& curves, double floor) {
+  double lo = floor > 0 ? floor : std::numeric_limits<double>::infinity(), hi = std::max(floor, 0.0);
+  for (const auto* c : curves)
+    for (std::size_t i = 0; i < c->median.size(); ++i) {
+      if (std::isfinite(c->q25[i]) && c->q25[i] > 0) lo = std::min(lo, c->q25[i]);
+      if (std::isfinite(c->q75[i])) hi = std::max(hi, c->q75[i]);
+      if (std::isfinite(c->median[i])) hi = std::max(hi, c->median[i]);
+    }
+  return hi >= 10.0 * lo;
+}
+
+// The noise floor is the best any fit can do, so it is drawn as the line
+// the curves approach; a log axis cannot show a floor of zero.
+double drawable_floor(const ReportContext& ctx) {
+  return ctx.noise_floor && std::isfinite(*ctx.noise_floor) && *ctx.noise_floor > 0 ? *ctx.noise_floor : 0.0;
+}
+
+std::string convergence_plot(const std::vector<const ConvergenceCurve*>& curves,
+                             const ConvergenceData& data, double floor) {
+  std::string plot = "  plot \\\n";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const std::string colour = std::string(" lc rgb \"") + kPalette[k % kPaletteSize] + "\"";
+    const std::string dash = " dt " + std::to_string(1 + int(k) / kPaletteSize);
+    const auto block = [](int i) { return "    \"convergence.dat\" index " + std::to_string(i); };
+    if (data.band_block[k] >= 0)
+      plot += block(data.band_block[k]) + " using 1:2:4 with filledcurves" + colour + " notitle, \\\n";
+    plot += block(data.line_block[k]) + " using 1:3 with lines lw 2" + dash + colour + " title " +
+            gp_string(curves[k]->label) + " noenhanced";
+    plot += k + 1 < curves.size() ? ", \\\n" : "\n";
+  }
+  if (floor > 0)
+    plot.insert(plot.size() - 1, ", \\\n    noise_floor with lines lw 1.5 dt 2 lc rgb \"#404040\" "
+                                 "title \"noise floor\"");
+  return plot;
+}
+
+std::string convergence_settings(const std::vector<const ConvergenceCurve*>& curves,
+                                 const ReportContext& ctx) {
+  const std::string title = "Convergence — " + ctx.experiment + " (" + ctx.problem + ")";
+  const std::string subtitle =
+      "median and interquartile range over " + std::to_string(ctx.trials) + " trials";
+  std::string s = "set title " + gp_string(title) + ".\"\\n\"." + gp_string(subtitle) +
+                  " noenhanced\n"
+                  "set xlabel \"Function evaluations\"\nset ylabel \"Best-so-far fitness (SSE)\"\n"
+                  "set logscale xy\nset format x \"10^{%L}\"\n";
+  if (spans_a_decade(curves, drawable_floor(ctx))) s += "set format y \"10^{%L}\"\n";
+  if (drawable_floor(ctx) > 0)
+    s += "noise_floor = " + number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
+  return s + "set grid xtics ytics lc rgb \"#d0d0d0\" lw 1 dt 1\n"
+             "set key top right opaque box spacing 1.2 samplen 2.5\n"
+             "set style fill transparent solid 0.25 noborder\n";
+}
+
+// ---- fit ------------------------------------------------------------------
+
+struct SegmentRuns {
+  std::string name;
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> runs;  // [begin, end) sample ranges
+};
+
+// Segments in order of first appearance; a segment that comes back later
+// gets a second run rather than a line joining the two.
+std::vector<SegmentRuns> segment_runs(const std::vector<std::string>& segments, Eigen::Index n) {
+  std::vector<SegmentRuns> out;
+  if (segments.empty()) return {{"", {{0, n}}}};
+  for (Eigen::Index i = 0; i < n;) {
+    Eigen::Index end = i;
+    while (end < n && segments[end] == segments[i]) ++end;
+    auto it = std::find_if(out.begin(), out.end(),
+                           [&](const SegmentRuns& s) { return s.name == segments[i]; });
+    if (it == out.end()) it = out.insert(out.end(), {segments[i], {}});
+    it->runs.push_back({i, end});
+    i = end;
+  }
+  return out;
+}
+
+std::string fit_csv(const Eigen::VectorXd& t, const Eigen::VectorXd& u, const Eigen::VectorXd& y,
+                    const Eigen::VectorXd& yhat, const std::vector<std::string>& segments) {
+  std::string out = segments.empty() ? "t,u,y_measured,y_model,residual\n"
+                                     : "t,u,y_measured,y_model,residual,segment\n";
+  for (Eigen::Index i = 0; i < t.size(); ++i) {
+    out += csv_number(t[i]) + "," + csv_number(u[i]) + "," + csv_number(y[i]) + "," +
+           csv_number(yhat[i]) + "," + csv_number(y[i] - yhat[i]);
+    out += (segments.empty() ? "" : "," + csv_field(segments[i])) + "\n";
+  }
+  return out;
+}
+
+std::string loops_data(const std::vector<SegmentRuns>& segs, const Eigen::VectorXd& u,
+                       const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
+  std::string out;
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    out += (k ? "\n\n" : "") + std::string("# index ") + std::to_string(k) + ": " +
+           segs[k].name + "\n# u y_measured y_model\n";
+    for (std::size_t r = 0; r < segs[k].runs.size(); ++r) {
+      out += r ? "\n" : "";  // a single blank line breaks the line between runs
+      for (Eigen::Index i = segs[k].runs[r].first; i < segs[k].runs[r].second; ++i)
+        out += number(u[i]) + " " + number(y[i]) + " " + number(yhat[i]) + "\n";
+    }
+  }
+  return out;
+}
+
+// A dashed line where the segment changes and its name above the plot, so a
+// misfit can be traced to the excitation that caused it.
+std::string segment_markers(const std::vector<std::string>& segments, const Eigen::VectorXd& t) {
+  std::string out;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (i > 0 && segments[i] == segments[i - 1]) continue;
+    const std::string at = number(t[Eigen::Index(i)]);
+    if (i > 0)
+      out += "  set arrow from " + at + ", graph 0 to " + at +
+             ", graph 1 nohead lc rgb \"#a0a0a0\" dt 2 back\n";
+    out += "  set label " + gp_string(segments[i]) + " at " + at +
+           ", graph 1.025 left offset 0.4,0 font \",9\" noenhanced\n";
+  }
+  return out;
+}
+
+std::string time_body(const std::string& csv, const std::string& title, const std::string& markers) {
+  const std::string data = gp_string(csv) + " skip 1 using 1:";
+  return "  set datafile separator comma\n  set multiplot title " + title + " noenhanced\n" + markers +
+         "  set lmargin at screen 0.11\n  set rmargin at screen 0.97\n"
+         "  set tmargin at screen 0.83\n  set bmargin at screen 0.40\n"
+         "  set format x \"\"\n  unset xlabel\n  set ylabel \"Output y\"\n"
+         "  set key at screen 0.97, screen 0.925 right horizontal samplen 2.5\n"
+         "  plot " + data + "3 with lines lw 1 lc rgb \"" + kMeasuredColour +
+         "\" title \"measured\", \\\n       " + data + "4 with lines lw 1.5 lc rgb \"" +
+         kModelColour + "\" title \"model\"\n  unset label\n"
+         "  set tmargin at screen 0.33\n  set bmargin at screen 0.11\n"
+         "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n  set ylabel \"Residual y − ŷ\"\n"
+         "  unset key\n  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
+         "\" notitle\n  unset multiplot\n  unset arrow\n";
+}
+
+std::string loops_settings(const std::vector<SegmentRuns>& segs, std::size_t shown) {
+  std::string names;
+  for (std::size_t k = 0; k < shown; ++k) names += (k ? ", " : "") + gp_string(segs[k].name);
+  const std::size_t cols = shown <= 3 ? shown : (shown <= 4 ? 2 : 3);
+  const std::size_t rows = (shown + cols - 1) / cols;
+  return "# One panel per segment; the panels shown are the first `panels` index\n"
+         "# blocks of the data file.\npanels = " + std::to_string(shown) + "\nrows = " +
+         std::to_string(rows) + "\ncols = " + std::to_string(cols) + "\narray segment[" +
+         std::to_string(shown) + "] = [" + names + "]\n"
+         "set grid lc rgb \"#d0d0d0\" lw 1 dt 1\n"
+         "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n";
+}
+
+std::string loops_body(const std::string& dat, const std::string& title) {
+  const std::string data = gp_string(dat) + " index i-1 using 1:";
+  return "  set multiplot layout rows, cols title " + title + " noenhanced\n"
+         "  do for [i=1:panels] {\n"
+         "    set title segment[i] noenhanced\n"
+         "    set xlabel (i > panels - cols ? \"Input u\" : \"\")\n"
+         "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
+         "    if (i == 1) { set key top left reverse Left opaque box samplen 2 } else { unset key }\n"
+         "    plot " + data + "2 with lines lw 1 lc rgb \"" + kMeasuredColour +
+         "\" title \"measured\", \\\n         " + data + "3 with lines lw 1.5 lc rgb \"" +
+         kModelColour + "\" title \"model\"\n  }\n  unset multiplot\n";
+}
+
+// ---- rendering ------------------------------------------------------------
+
+bool gnuplot_on_path() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string d; std::getline(dirs, d, ':');) {
+    const fs::path exe = fs::path(d.empty() ? "." : d) / "gnuplot";
+    std::error_code ec;
+    if (fs::is_regular_file(exe, ec) && ::access(exe.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// The line worth showing from gnuplot's messages: the first that is not a
+// warning (gnuplot stops at its first error), else the first line.
+std::string first_error_line(const fs::path& log) {
+  std::ifstream in(log);
+  std::string first;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    if (line.find("warning:") == std::string::npos) return line;
+    if (first.empty()) first = line;
+  }
+  return first;
+}
+
+}  // namespace
+
+fs::path write_convergence_figure(const fs::path& dir, const std::vector<ConvergenceCurve>& curves,
+                                  const ReportContext& ctx) {
+  std::vector<const ConvergenceCurve*> plotted;
+  for (const auto& c : curves)
+    if (has_finite_median(c)) plotted.push_back(&c);
+  const ConvergenceData data = convergence_data(plotted);
+  write_file_atomic(dir / "convergence.dat", data.text);
+  std::string text = script_header("convergence",
+                                   "best-so-far fitness against function evaluations, one median "
+                                   "line and one\n# interquartile band per algorithm",
+                                   "convergence.dat (the finite rows of convergence.csv; per "
+                                   "algorithm one index\n# block for the median line and one for "
+                                   "the band: evaluations q25 median q75)");
+  text += convergence_settings(plotted, ctx);
+  if (plotted.empty())
+    return write_script(dir, "convergence", text + "# No algorithm reached a finite fitness.\n");
+  return write_script(dir, "convergence", text + render_all_terminals("convergence", convergence_plot(plotted, data, drawable_floor(ctx))));
+}
+
+std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& label,
+                                        const Eigen::VectorXd& t, const Eigen::VectorXd& u,
+                                        const Eigen::VectorXd& y_measured,
+                                        const Eigen::VectorXd& y_model,
+                                        const std::vector<std::string>& segments,
+                                        const ReportContext& ctx) {
+  const std::string stem = "fit_" + file_label(label);
+  const auto segs = segment_runs(segments, t.size());
+  write_file_atomic(dir / (stem + ".csv"), fit_csv(t, u, y_measured, y_model, segments));
+  write_file_atomic(dir / (stem + "_loops.dat"), loops_data(segs, u, y_measured, y_model));
+
+  const std::string who = label + " on " + ctx.problem;
+  std::string time = script_header(stem + "_time", "measured and model output over time (top) and the residual (bottom)",
+                                   stem + ".csv (t,u,y_measured,y_model,residual[,segment])");
+  time += render_all_terminals(stem + "_time", time_body(stem + ".csv", gp_string("Best fit of " + who + ": output over time"), segment_markers(segments, t)));
+
+  const std::size_t shown = std::min(segs.size(), kMaxLoopPanels);
+  std::string loop_title = "Hysteresis loops of the best fit of " + who;
+  if (shown < segs.size())
+    loop_title += " (first " + std::to_string(shown) + " of " + std::to_string(segs.size()) + " segments)";
+  std::string loops = script_header(stem + "_loops", "input-output (u-y) loops, measured and model",
+                                    stem + "_loops.dat (one index block per segment: u y_measured y_model)");
+  loops += loops_settings(segs, shown) + render_all_terminals(stem + "_loops", loops_body(stem + "_loops.dat", gp_string(loop_title)));
+  return {write_script(dir, stem + "_time", time), write_script(dir, stem + "_loops", loops)};
+}
+
+std::vector<fs::path> render_figures(const fs::path& dir, const std::vector<fs::path>& scripts,
+                                     std::string& note) {
+  note.clear();
+  std::vector<fs::path> images;
+  if (!gnuplot_on_path()) {
+    note = "gnuplot not found: install gnuplot (Debian: apt-get install gnuplot-nox), then run "
+           "`gnuplot NAME.gp` inside " + dir.string();
+    return images;
+  }
+  const fs::path log = dir / "gnuplot.log";
+  std::error_code ec;
+  fs::remove(log, ec);
+  for (const auto& script : scripts) {
+    for (const char* ext : {".svg", ".png", ".pdf"})  // so only fresh images are returned
+      fs::remove(dir / script.filename().replace_extension(ext), ec);
+    const std::string command = "cd " + shell_quote(dir.string()) + " && gnuplot " +
+                                shell_quote(script.filename().string()) + " 2>> gnuplot.log";
+    if (std::system(command.c_str()) != 0 && note.empty())
+      note = "gnuplot failed on " + script.filename().string() + ": " + first_error_line(log) +
+             " (see " + log.string() + ")";
+    for (const char* ext : {".svg", ".png", ".pdf"}) {
+      const fs::path image = dir / script.filename().replace_extension(ext);
+      if (fs::exists(image, ec) && fs::file_size(image, ec) > 0) images.push_back(image);
+    }
+  }
+  if (fs::exists(log, ec) && fs::file_size(log, ec) == 0) fs::remove(log, ec);
+  return images;
+}
+
+}  // namespace hystbench

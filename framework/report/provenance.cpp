@@ -1,0 +1,43 @@
+#include "framework/report/provenance.hpp"
+
+#include <unistd.h>
+
+#include <ctime>
+
+namespace hystbench {
+namespace {
+
+#if defined(__clang__)
+constexpr const char* kCompiler = "clang " __clang_version__;
+#else
+constexpr const char* kCompiler = "gcc " __VERSION__;
+#endif
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  return gethostname(buf, sizeof buf - 1) == 0 ? buf : "unknown";
+}
+
+}  // namespace
+
+nlohmann::json provenance(int threads, std::uint64_t seed) {
+  return {{"version", HYSTBENCH_VERSION},
+          {"git_commit", HYSTBENCH_GIT_COMMIT},
+          {"compiler", kCompiler},
+          {"flags", HYSTBENCH_CXX_FLAGS},
+          {"threads", threads},
+          {"seed", seed},
+          {"date", utc_now()},
+          {"host", host_name()}};
+}
+
+}  // namespace hystbench

@@ -1,0 +1,102 @@
+#include "framework/report/results_folder.hpp"
+
+#include <sstream>
+
+#include "framework/io/atomic_file.hpp"
+#include "framework/report/convergence.hpp"
+#include "framework/report/figures.hpp"
+#include "framework/report/provenance.hpp"
+#include "framework/report/tables.hpp"
+
+namespace hystbench {
+namespace {
+
+std::optional<double> noise_floor_of(const Problem& problem) {
+  const auto d = problem.describe();
+  if (d.contains("noise_floor_sse")) return d["noise_floor_sse"].get<double>();
+  return std::nullopt;
+}
+
+ReportContext report_context(const Experiment& e, const Problem& problem) {
+  return {e.name, problem.name(), describe_budget(e.budget), e.trials, e.seed, noise_floor_of(problem)};
+}
+
+std::vector<AlgorithmSummary> summarize_all(const Experiment& e, const Problem& problem,
+                                            const std::vector<std::vector<TrialResult>>& results) {
+  std::vector<AlgorithmSummary> out;
+  for (std::size_t a = 0; a < results.size(); ++a) {
+    const auto& spec = e.algorithms[a];
+    out.push_back(summarize(spec.label, spec.name, spec.params, problem.bounds().names, results[a]));
+  }
+  return out;
+}
+
+nlohmann::json summary_json(const Experiment& e, const Problem& problem,
+                            const std::vector<AlgorithmSummary>& summaries, int threads) {
+  nlohmann::json algs = nlohmann::json::array();
+  for (const auto& s : summaries) algs.push_back(s.to_json());
+  return {{"experiment", e.to_json()},
+          {"problem", problem.describe()},
+          {"algorithms", algs},
+          {"provenance", provenance(threads, e.seed)}};
+}
+
+// Model vs measurement for the best trial of each algorithm.
+std::vector<std::filesystem::path> fit_figures(const std::filesystem::path& dir, const Problem& problem,
+                                               const std::vector<AlgorithmSummary>& summaries,
+                                               const ReportContext& ctx) {
+  std::vector<std::filesystem::path> scripts;
+  const auto* model = dynamic_cast<const SignalModelProblem*>(&problem);
+  if (!model) return scripts;
+  for (const auto& s : summaries) {
+    if (s.best_trial < 0) continue;
+    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.best_x.data(), s.best_x.size());
+    auto made = write_fit_figures(dir, s.label, model->time(), model->input(), model->measured(),
+                                  model->simulate(x), model->segments(), ctx);
+    scripts.insert(scripts.end(), made.begin(), made.end());
+  }
+  return scripts;
+}
+
+}  // namespace
+
+std::string describe_budget(const Budget& b) {
+  std::vector<std::string> parts;
+  auto add = [&](auto v, const char* unit) {
+    std::ostringstream os;
+    os << v << unit;
+    parts.push_back(os.str());
+  };
+  if (b.evaluations) add(*b.evaluations, " evaluations");
+  if (b.iterations) add(*b.iterations, " iterations");
+  if (b.seconds) add(*b.seconds, " s");
+  if (b.target) add(*b.target, " target fitness");
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : " or ") + p;
+  return out;
+}
+
+WrittenReport write_report(const std::filesystem::path& dir, const Experiment& experiment,
+                           const Problem& problem,
+                           const std::vector<std::vector<TrialResult>>& results, int threads) {
+  WrittenReport out;
+  const ReportContext ctx = report_context(experiment, problem);
+  out.summaries = summarize_all(experiment, problem, results);
+  write_file_atomic(dir / "summary.json", summary_json(experiment, problem, out.summaries, threads).dump(2) + "\n");
+  write_tables(dir, out.summaries, ctx);
+
+  std::vector<ConvergenceCurve> curves;
+  for (std::size_t a = 0; a < results.size(); ++a)
+    curves.push_back(convergence_curve(experiment.algorithms[a].label, results[a]));
+  write_convergence_csv(dir / "convergence.csv", curves);
+
+  std::vector<std::filesystem::path> scripts{write_convergence_figure(dir, curves, ctx)};
+  const auto fits = fit_figures(dir, problem, out.summaries, ctx);
+  scripts.insert(scripts.end(), fits.begin(), fits.end());
+  out.figures = render_figures(dir, scripts, out.note);
+  for (const char* f : {"summary.json", "trials.jsonl", "table.md", "table.tex", "table.csv", "convergence.csv"})
+    out.files.push_back(dir / f);
+  return out;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,112 @@
+#include "problems/hammerstein/hammerstein_problem.hpp"
+
+#include <fstream>
+
+#include "framework/core/error.hpp"
+#include "framework/core/registry.hpp"
+#include "framework/io/data_path.hpp"
+
+namespace hystbench {
+namespace {
+
+// Reads {"name": [lo, hi], ...} on top of the defaults.
+Bounds apply_bound_overrides(Bounds bounds, const nlohmann::json& overrides) {
+  require_known_keys(overrides, bounds.names, "problem.bounds");
+  for (int j = 0; j < bounds.dimension(); ++j) {
+    const auto it = overrides.find(bounds.names[j]);
+    if (it == overrides.end()) continue;
+    const std::string key = "problem.bounds." + bounds.names[j];
+    if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
+      throw InputError(key + " = " + it->dump() + ": expected [lower, upper]");
+    bounds.lower[j] = (*it)[0].get<double>();
+    bounds.upper[j] = (*it)[1].get<double>();
+    if (!(bounds.lower[j] < bounds.upper[j]))
+      throw InputError(key + " = " + it->dump() + ": the lower bound must be below the upper bound");
+  }
+  return bounds;
+}
+
+std::optional<double> read_noise_floor(const std::filesystem::path& data_file) {
+  std::filesystem::path truth = data_file;
+  truth.replace_extension(".truth.json");
+  std::ifstream in(truth);
+  if (!in) return std::nullopt;
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("noise_floor_sse")) return std::nullopt;
+  return j["noise_floor_sse"].get<double>();
+}
+
+std::unique_ptr<Problem> create(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
+  if (!spec.contains("data")) throw InputError("problem: missing key \"data\" (the measurement CSV file)");
+  if (!spec["data"].is_string()) throw InputError("problem.data: expected a file name");
+  const auto path = resolve_data_path(spec["data"].get<std::string>(), base_dir, "problem.data");
+  const ColumnMap columns =
+      spec.contains("columns") ? ColumnMap::from_json(spec["columns"], "problem.columns") : ColumnMap{};
+  const auto form_json = spec.value("bouc_wen_form", nlohmann::json("increment"));
+  if (!form_json.is_string()) throw InputError("problem.bouc_wen_form: use \"increment\" or \"paper\"");
+  Bounds bounds = HammersteinProblem::default_bounds();
+  if (spec.contains("bounds")) bounds = apply_bound_overrides(bounds, spec["bounds"]);
+  return std::make_unique<HammersteinProblem>(read_measurement(path, columns),
+                                              bouc_wen_form_from_string(form_json.get<std::string>()),
+                                              bounds);
+}
+
+}  // namespace
+
+HammersteinProblem::HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds)
+    : data_(std::move(data)), form_(form), bounds_(std::move(bounds)) {
+  noise_floor_ = read_noise_floor(data_.source);
+}
+
+ProblemInfo HammersteinProblem::info() {
+  return {"hammerstein",
+          "13-parameter Hammerstein MFC model (Bouc-Wen, asymmetric static part, "
+          "mass-spring-damper, ARX); fitness = SSE over the record",
+          {"type", "data", "columns", "bouc_wen_form", "bounds"},
+          create};
+}
+
+Bounds HammersteinProblem::default_bounds() {
+  const auto& n = HammersteinParams::names();
+  Bounds b;
+  b.names.assign(n.begin(), n.end());
+  b.lower.resize(HammersteinParams::kCount);
+  b.upper.resize(HammersteinParams::kCount);
+  //        alpha beta  gamma  L   d1   d2     M     D     K    a   b   c   d
+  b.lower << 0.0, 0.0, -0.01, 0.0, 0.0, -1e-4, 1e-6, 1e-5, 0.1, -1, -1, -2, -1;
+  b.upper << 1.0, 0.01, 0.01, 1.0, 0.5, 1e-4, 1e-4, 1e-2, 10, 1, 1, 2, 1;
+  return b;
+}
+
+std::string HammersteinProblem::name() const {
+  return "hammerstein(" + std::filesystem::path(data_.source).filename().string() + ")";
+}
+
+void HammersteinProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                                  Eigen::Ref<Eigen::VectorXd> f) const {
+  for (Eigen::Index i = 0; i < X.cols(); ++i)
+    f[i] = hammerstein_sse(HammersteinParams::from_vector(X.col(i)), data_.u, data_.y,
+                           data_.sample_time, form_);
+}
+
+Eigen::VectorXd HammersteinProblem::simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  return simulate_hammerstein(HammersteinParams::from_vector(x), data_.u, data_.sample_time, form_);
+}
+
+nlohmann::json HammersteinProblem::describe() const {
+  nlohmann::json j = {{"name", name()},
+                      {"type", "hammerstein"},
+                      {"data", data_.source},
+                      {"samples", data_.size()},
+                      {"sample_time", data_.sample_time},
+                      {"bouc_wen_form", to_string(form_)},
+                      {"parameters", bounds_.names},
+                      {"lower", std::vector<double>(bounds_.lower.begin(), bounds_.lower.end())},
+                      {"upper", std::vector<double>(bounds_.upper.begin(), bounds_.upper.end())}};
+  if (noise_floor_) j["noise_floor_sse"] = *noise_floor_;
+  return j;
+}
+
+}  // namespace hystbench
+
+HYSTBENCH_PROBLEM(hystbench::HammersteinProblem)

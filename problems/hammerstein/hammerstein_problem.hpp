@@ -1,0 +1,52 @@
+#pragma once
+// The Hammerstein identification problem: find the 13 seed-model parameters
+// that minimise the SSE between model and measurement.
+//
+// Experiment JSON:
+//   {"type": "hammerstein",
+//    "data": "problems/hammerstein/data/default.csv",
+//    "columns": {"t": "t_s", "u": "u_N", "y": "y_m"},     optional
+//    "bouc_wen_form": "increment" | "paper",               optional
+//    "bounds": {"beta": [0, 0.02], ...}}                   optional overrides
+//
+// When a file DATA.truth.json sits beside DATA.csv (as `hystbench simulate`
+// writes it), its noise-floor SSE is reported with the results.
+#include <optional>
+
+#include "framework/core/problem.hpp"
+#include "framework/core/registry.hpp"
+#include "framework/io/measurement.hpp"
+#include "problems/hammerstein/hammerstein_model.hpp"
+
+namespace hystbench {
+
+class HammersteinProblem : public Problem, public SignalModelProblem {
+ public:
+  HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds);
+
+  static ProblemInfo info();  // registry entry "hammerstein"
+  // The documented default search box (README, "Hammerstein problem").
+  static Bounds default_bounds();
+
+  std::string name() const override;
+  const Bounds& bounds() const override { return bounds_; }
+  void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                Eigen::Ref<Eigen::VectorXd> f) const override;
+  nlohmann::json describe() const override;
+
+  const Eigen::VectorXd& time() const override { return data_.t; }
+  const Eigen::VectorXd& input() const override { return data_.u; }
+  const Eigen::VectorXd& measured() const override { return data_.y; }
+  const std::vector<std::string>& segments() const override { return data_.segment; }
+  Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
+
+  std::optional<double> noise_floor() const { return noise_floor_; }
+
+ private:
+  Measurement data_;
+  BoucWenForm form_;
+  Bounds bounds_;
+  std::optional<double> noise_floor_;
+};
+
+}  // namespace hystbench
