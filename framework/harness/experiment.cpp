@@ -59,7 +59,7 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
     e.budget = Budget::from_json(required(j, "budget"), "budget");
     e.trials = positive_integer(required(j, "trials"), "trials");
     const auto seed = j.value("seed", nlohmann::json(1));
-    if (!seed.is_number_unsigned()) throw InputError("seed = " + seed.dump() + ": must be a non-negative integer");
+    if (!seed.is_number_integer() || seed.get<long long>() < 0) throw InputError("seed = " + seed.dump() + ": must be a non-negative integer");
     e.seed = seed.get<std::uint64_t>();
     const auto& algorithms = required(j, "algorithms");
     if (!algorithms.is_array() || algorithms.empty())

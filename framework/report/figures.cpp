@@ -179,7 +179,7 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
   if (spans_a_decade(curves, drawable_floor(ctx))) s += "set format y \"10^{%L}\"\n";
   if (drawable_floor(ctx) > 0)
     s += "noise_floor = " + number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
-  return s + "set grid xtics ytics lc rgb \"#d0d0d0\" lw 1 dt 1\n"
+  return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
              "set key top right opaque box spacing 1.2 samplen 2.5\n"
              "set style fill transparent solid 0.25 noborder\n";
 }
@@ -235,10 +235,34 @@ std::string loops_data(const std::vector<SegmentRuns>& segs, const Eigen::Vector
   return out;
 }
 
-// A dashed line where the segment changes and its name above the plot, so a
-// misfit can be traced to the excitation that caused it.
+struct Span {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  void add(double x) {
+    if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+  }
+};
+
+// 1, 2 or 5 times a power of ten, for at most `intervals` tic intervals:
+// gnuplot's own spacing ignores the panel height and crowds short panels.
+// 0 (gnuplot's choice) when the data has no width.
+double tic_step(const Span& s, int intervals) {
+  const double raw = (s.hi - s.lo) / intervals;
+  if (!(raw > 0) || !std::isfinite(raw)) return 0.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * decade >= raw * (1 - 1e-9)) return m * decade;
+  return 10.0 * decade;
+}
+
+std::string tics(const char* axis, double step) {
+  return std::string("  set ") + axis + "tics " + (step > 0 ? number(step) : "autofreq") + "\n";
+}
+
+// A dashed line where the segment changes and its name in a strip kept
+// free at the top of the panel, so a misfit can be traced to its excitation.
 std::string segment_markers(const std::vector<std::string>& segments, const Eigen::VectorXd& t) {
-  std::string out;
+  if (segments.empty()) return "  set offsets 0, 0, graph 0.05, graph 0.05\n";
+  std::string out = "  set offsets 0, 0, graph 0.16, graph 0.05\n";
   for (std::size_t i = 0; i < segments.size(); ++i) {
     if (i > 0 && segments[i] == segments[i - 1]) continue;
     const std::string at = number(t[Eigen::Index(i)]);
@@ -246,51 +270,101 @@ std::string segment_markers(const std::vector<std::string>& segments, const Eige
       out += "  set arrow from " + at + ", graph 0 to " + at +
              ", graph 1 nohead lc rgb \"#a0a0a0\" dt 2 back\n";
     out += "  set label " + gp_string(segments[i]) + " at " + at +
-           ", graph 1.025 left offset 0.4,0 font \",9\" noenhanced\n";
+           ", graph 0.955 left offset 0.4,0 noenhanced\n";
   }
   return out;
 }
 
-std::string time_body(const std::string& csv, const std::string& title, const std::string& markers) {
-  const std::string data = gp_string(csv) + " skip 1 using 1:";
-  return "  set datafile separator comma\n  set multiplot title " + title + " noenhanced\n" + markers +
-         "  set lmargin at screen 0.11\n  set rmargin at screen 0.97\n"
-         "  set tmargin at screen 0.83\n  set bmargin at screen 0.40\n"
-         "  set format x \"\"\n  unset xlabel\n  set ylabel \"Output y\"\n"
-         "  set key at screen 0.97, screen 0.925 right horizontal samplen 2.5\n"
+struct TimeFigure {
+  std::string csv, title, markers;
+  double output_step, residual_step;
+};
+
+// Two panels sharing the time axis; margins in character units keep the
+// axes aligned and the labels inside the page at every font size.
+std::string time_body(const TimeFigure& f) {
+  const std::string data = gp_string(f.csv) + " skip 1 using 1:";
+  return "  set datafile separator comma\n  set multiplot\n"
+         "  set autoscale fix\n  set lmargin 10\n  set rmargin 2\n"
+         "  set origin 0, 0.38\n  set size 1, 0.62\n  set tmargin 4\n  set bmargin 0.5\n"
+         "  set title " + f.title + " noenhanced offset 0, 1.2\n" + f.markers +
+         "  set format x \"\"\n  unset xlabel\n  set ylabel \"Output y\"\n" +
+         tics("y", f.output_step) +
+         "  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n"
          "  plot " + data + "3 with lines lw 1 lc rgb \"" + kMeasuredColour +
          "\" title \"measured\", \\\n       " + data + "4 with lines lw 1.5 lc rgb \"" +
-         kModelColour + "\" title \"model\"\n  unset label\n"
-         "  set tmargin at screen 0.33\n  set bmargin at screen 0.11\n"
-         "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n  set ylabel \"Residual y − ŷ\"\n"
-         "  unset key\n  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
+         kModelColour + "\" title \"model\"\n"
+         "  unset label\n  unset title\n  unset key\n"
+         "  set origin 0, 0\n  set size 1, 0.38\n  set tmargin 0.5\n  set bmargin 3.2\n"
+         "  set offsets 0, 0, graph 0.05, graph 0.05\n"
+         "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n  set ylabel \"Residual\\ny − ŷ\"\n" +
+         tics("y", f.residual_step) +
+         "  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
          "\" notitle\n  unset multiplot\n  unset arrow\n";
 }
 
-std::string loops_settings(const std::vector<SegmentRuns>& segs, std::size_t shown) {
-  std::string names;
-  for (std::size_t k = 0; k < shown; ++k) names += (k ? ", " : "") + gp_string(segs[k].name);
-  const std::size_t cols = shown <= 3 ? shown : (shown <= 4 ? 2 : 3);
-  const std::size_t rows = (shown + cols - 1) / cols;
-  return "# One panel per segment; the panels shown are the first `panels` index\n"
-         "# blocks of the data file.\npanels = " + std::to_string(shown) + "\nrows = " +
-         std::to_string(rows) + "\ncols = " + std::to_string(cols) + "\narray segment[" +
-         std::to_string(shown) + "] = [" + names + "]\n"
-         "set grid lc rgb \"#d0d0d0\" lw 1 dt 1\n"
-         "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n";
+TimeFigure time_figure(const std::string& stem, const std::string& who, const Eigen::VectorXd& t,
+                       const Eigen::VectorXd& y, const Eigen::VectorXd& yhat,
+                       const std::vector<std::string>& segments) {
+  Span output, residual;
+  for (Eigen::Index i = 0; i < y.size(); ++i) {
+    output.add(y[i]);
+    output.add(yhat[i]);
+    residual.add(y[i] - yhat[i]);
+  }
+  return {stem + ".csv", gp_string("Best fit of " + who + ": output over time"),
+          segment_markers(segments, t), tic_step(output, 4), tic_step(residual, 3)};
 }
 
+std::string number_array(const char* name, const std::vector<double>& v) {
+  std::string out = "array " + std::string(name) + "[" + std::to_string(v.size()) + "] = [";
+  for (std::size_t k = 0; k < v.size(); ++k) out += (k ? ", " : "") + number(v[k]);
+  return out + "]\n";
+}
+
+std::string loops_settings(const std::vector<SegmentRuns>& segs, std::size_t shown,
+                           const Eigen::VectorXd& u, const Eigen::VectorXd& y,
+                           const Eigen::VectorXd& yhat) {
+  std::string names;
+  std::vector<double> xstep, ystep;
+  for (std::size_t k = 0; k < shown; ++k) {
+    names += (k ? ", " : "") + gp_string(segs[k].name);
+    Span su, sy;
+    for (const auto& [begin, end] : segs[k].runs)
+      for (Eigen::Index i = begin; i < end; ++i) su.add(u[i]), sy.add(y[i]), sy.add(yhat[i]);
+    xstep.push_back(tic_step(su, 4));
+    ystep.push_back(tic_step(sy, 4));
+  }
+  const std::size_t cols = shown <= 3 ? shown : (shown <= 4 ? 2 : 3);
+  const std::size_t rows = (shown + cols - 1) / cols;
+  return "# One panel per segment: the first `panels` index blocks of the data\n"
+         "# file, with tic spacing per panel (0: gnuplot's choice).\npanels = " +
+         std::to_string(shown) + "\nrows = " + std::to_string(rows) + "\ncols = " +
+         std::to_string(cols) + "\narray segment[" + std::to_string(shown) + "] = [" + names +
+         "]\n" + number_array("xstep", xstep) + number_array("ystep", ystep) +
+         "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\n"
+         "# Tight axes plus a small margin, so no loop touches the frame.\n"
+         "set autoscale fix\nset offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
+}
+
+// Margins in character units, so the panels keep their room at every
+// font size; the segment name sits inside the panel's upper left corner,
+// which a loop rising to the right leaves free.
 std::string loops_body(const std::string& dat, const std::string& title) {
   const std::string data = gp_string(dat) + " index i-1 using 1:";
-  return "  set multiplot layout rows, cols title " + title + " noenhanced\n"
+  return "  set multiplot layout rows, cols title " + title + " noenhanced \\\n"
+         "      margins char 9, char 2, char 3.5, char 3.5 spacing char 7, char 2\n"
          "  do for [i=1:panels] {\n"
-         "    set title segment[i] noenhanced\n"
+         "    set label 1 segment[i] at graph 0.03, graph 0.92 left front noenhanced\n"
          "    set xlabel (i > panels - cols ? \"Input u\" : \"\")\n"
          "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
-         "    if (i == 1) { set key top left reverse Left opaque box samplen 2 } else { unset key }\n"
+         "    if (xstep[i] > 0) { set xtics xstep[i] } else { set xtics autofreq }\n"
+         "    if (ystep[i] > 0) { set ytics ystep[i] } else { set ytics autofreq }\n"
+         "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom horizontal maxcols 2 samplen 2.5 }"
+         " else { unset key }\n"
          "    plot " + data + "2 with lines lw 1 lc rgb \"" + kMeasuredColour +
          "\" title \"measured\", \\\n         " + data + "3 with lines lw 1.5 lc rgb \"" +
-         kModelColour + "\" title \"model\"\n  }\n  unset multiplot\n";
+         kModelColour + "\" title \"model\"\n  }\n  unset multiplot\n  unset label\n";
 }
 
 // ---- rendering ------------------------------------------------------------
@@ -360,7 +434,7 @@ std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& 
   const std::string who = label + " on " + ctx.problem;
   std::string time = script_header(stem + "_time", "measured and model output over time (top) and the residual (bottom)",
                                    stem + ".csv (t,u,y_measured,y_model,residual[,segment])");
-  time += render_all_terminals(stem + "_time", time_body(stem + ".csv", gp_string("Best fit of " + who + ": output over time"), segment_markers(segments, t)));
+  time += render_all_terminals(stem + "_time", time_body(time_figure(stem, who, t, y_measured, y_model, segments)));
 
   const std::size_t shown = std::min(segs.size(), kMaxLoopPanels);
   std::string loop_title = "Hysteresis loops of the best fit of " + who;
@@ -368,7 +442,7 @@ std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& 
     loop_title += " (first " + std::to_string(shown) + " of " + std::to_string(segs.size()) + " segments)";
   std::string loops = script_header(stem + "_loops", "input-output (u-y) loops, measured and model",
                                     stem + "_loops.dat (one index block per segment: u y_measured y_model)");
-  loops += loops_settings(segs, shown) + render_all_terminals(stem + "_loops", loops_body(stem + "_loops.dat", gp_string(loop_title)));
+  loops += loops_settings(segs, shown, u, y_measured, y_model) + render_all_terminals(stem + "_loops", loops_body(stem + "_loops.dat", gp_string(loop_title)));
   return {write_script(dir, stem + "_time", time), write_script(dir, stem + "_loops", loops)};
 }
 

@@ -1,0 +1,184 @@
+// The `hystbench` program as a user runs it: results, determinism across
+// thread counts, and bad input answered with one clear message and exit 2.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+Outcome hystbench(const std::string& args) {
+  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hystbench_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+            "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  // An experiment on `data` with one DE entry whose fields are `algorithm`.
+  std::string experiment(const std::string& data, const std::string& algorithm = R"("name": "de")",
+                         const std::string& budget = R"({"evaluations": 600})", int trials = 4) {
+    return write("experiment.json", R"({"name": "t", "problem": {"type": "hammerstein", "data": ")" + data +
+                                        R"("}, "budget": )" + budget + R"(, "trials": )" +
+                                        std::to_string(trials) + R"(, "seed": 3, "algorithms": [{)" +
+                                        algorithm + "}]}");
+  }
+  static std::string default_data() { return std::string(HYSTBENCH_SOURCE_DIR) + "/problems/hammerstein/data/default.csv"; }
+
+  fs::path dir_;
+};
+
+nlohmann::json numbers_of(const fs::path& summary) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(summary));
+  j.erase("provenance");  // date, host, thread count
+  for (auto& a : j["algorithms"]) a.erase("wall_seconds");
+  return j;
+}
+
+TEST_F(Cli, SummaryNumbersDoNotDependOnThreadCount) {
+  const auto exp = experiment(default_data(), R"("name": "de", "label": "DE", "params": {"np": 30})");
+  const auto one = hystbench("run " + exp + " --threads 1 --out " + (dir_ / "one").string());
+  ASSERT_EQ(one.code, 0) << one.output;
+  const auto two = hystbench("run " + exp + " --threads 2 --out " + (dir_ / "two").string());
+  ASSERT_EQ(two.code, 0) << two.output;
+  const auto a = numbers_of(dir_ / "one" / "summary.json");
+  EXPECT_EQ(a, numbers_of(dir_ / "two" / "summary.json"));
+  EXPECT_EQ(a["algorithms"][0]["trials"], 4);
+  EXPECT_TRUE(a["algorithms"][0]["best_x"].contains("alpha"));
+  for (const char* f : {"trials.jsonl", "table.md", "table.tex", "table.csv", "convergence.csv", "convergence.gp",
+                        "fit_DE_time.gp", "fit_DE_loops.gp"})
+    EXPECT_TRUE(fs::exists(dir_ / "one" / f)) << f;
+  EXPECT_NE(one.output.find("| DE |"), std::string::npos) << one.output;
+}
+
+TEST_F(Cli, RefusesToOverwriteResultsWithoutForce) {
+  const auto exp = experiment(default_data(), R"("name": "de")", R"({"evaluations": 100})", 1);
+  const auto out = " --out " + (dir_ / "r").string();
+  ASSERT_EQ(hystbench("run " + exp + out).code, 0);
+  const auto again = hystbench("run " + exp + out);
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.output.find("already holds results; pass --force"), std::string::npos) << again.output;
+  EXPECT_EQ(hystbench("run " + exp + out + " --force").code, 0);
+}
+
+// Each bad input: exit code 2, a message with the place, and no results folder.
+void expect_rejected(const Outcome& o, const std::vector<std::string>& fragments, const fs::path& out) {
+  EXPECT_EQ(o.code, 2) << o.output;
+  for (const auto& f : fragments) EXPECT_NE(o.output.find(f), std::string::npos) << "missing '" << f << "' in: " << o.output;
+  EXPECT_FALSE(fs::exists(out)) << "partial output left in " << out;
+}
+
+TEST_F(Cli, MissingColumnNamesFileAndColumns) {
+  const auto csv = write("nocol.csv", "t,u,z\n0,1,2\n0.1,2,3\n0.2,3,4\n");
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + experiment(csv) + " --out " + out.string()),
+                  {"nocol.csv", "'y'", "--columns"}, out);
+}
+
+TEST_F(Cli, NanValueNamesFileLineAndColumn) {
+  const auto csv = write("nan.csv", "t,u,y\n0,1,2\n0.1,nan,3\n0.2,3,4\n");
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + experiment(csv) + " --out " + out.string()), {"nan.csv", "line 3", "'u'"}, out);
+}
+
+TEST_F(Cli, TimeNotIncreasingNamesFileAndLine) {
+  const auto csv = write("time.csv", "t,u,y\n0,1,2\n0.1,2,3\n0.1,3,4\n0.3,3,4\n");
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + experiment(csv) + " --out " + out.string()), {"time.csv", "line 4"}, out);
+}
+
+TEST_F(Cli, UnknownAlgorithmNamesKeyAndKnownOnes) {
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + experiment(default_data(), R"("name": "sade")") + " --out " + out.string()),
+                  {"experiment.json", "algorithms[0].name", "unknown name 'sade'", "known: de"}, out);
+}
+
+TEST_F(Cli, UnknownParameterNamesKeyAndValidOnes) {
+  const auto out = dir_ / "o";
+  expect_rejected(
+      hystbench("run " + experiment(default_data(), R"("name": "de", "params": {"F": 0.5})") + " --out " + out.string()),
+      {"experiment.json", "algorithms[0] (de).params", "unknown key 'F'", "valid keys: np, f, cr"}, out);
+}
+
+TEST_F(Cli, OutOfRangeParameterNamesTheRange) {
+  const auto out = dir_ / "o";
+  expect_rejected(
+      hystbench("run " + experiment(default_data(), R"("name": "de", "params": {"np": 2})") + " --out " + out.string()),
+      {"params.np = 2 is out of range; it must be in [4, 100000]"}, out);
+}
+
+TEST_F(Cli, BrokenJsonNamesFileAndPosition) {
+  const auto exp = write("broken.json", "{\"name\": \"t\",\n \"trials\": 3,,\n}");
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + exp + " --out " + out.string()), {"broken.json", "not valid JSON", "line 2"}, out);
+}
+
+TEST_F(Cli, NegativeBudgetIsRejected) {
+  const auto out = dir_ / "o";
+  expect_rejected(hystbench("run " + experiment(default_data(), R"("name": "de")", R"({"evaluations": -5})") +
+                            " --out " + out.string()),
+                  {"budget.evaluations = -5: must be a positive integer"}, out);
+}
+
+TEST_F(Cli, SimulateWritesDataAndTruthWithConsistentNoiseFloor) {
+  const auto params = write("p.json", R"({"alpha": 0.4, "beta": 0.0015, "gamma": 0.0005, "L": 0.2, "d1": 0.15,
+    "d2": 6e-5, "M": 1.583e-05, "D": 0.001194, "K": 1.0, "a": 0.2, "b": 0.09, "c": -1.0, "d": 0.29})");
+  const auto excitation = write("e.json", R"({"sample_rate": 1000, "segments": [
+    {"type": "sine", "frequency": 2, "amplitude": 500, "duration": 1},
+    {"type": "sweep", "f0": 1, "f1": 20, "amplitude": 300, "offset": 100, "duration": 1},
+    {"type": "steps", "levels": [0, 400, 100], "hold": 0.2, "ramp": 0.05}]})");
+  const auto csv = (dir_ / "sim.csv").string();
+  const auto o = hystbench("simulate --params " + params + " --excitation " + excitation + " --noise 0.02 --seed 9 --out " + csv);
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto truth = nlohmann::json::parse(std::ifstream(dir_ / "sim.truth.json"));
+  EXPECT_EQ(truth["samples"], 1000 + 1000 + 3 * 250);
+  // The noise floor is the SSE of the truth; it is close to N sigma^2.
+  EXPECT_NEAR(truth["noise_floor_sse"].get<double>() / truth["expected_noise_sse"].get<double>(), 1.0, 0.1);
+  std::ifstream in(csv);
+  std::string line, last;
+  while (std::getline(in, line)) last = line;
+  EXPECT_NE(last.find(",steps"), std::string::npos) << last;
+}
+
+TEST_F(Cli, ListShowsOptimizersWithParametersAndCitations) {
+  const auto o = hystbench("list");
+  EXPECT_EQ(o.code, 0);
+  for (const char* s : {"de - ", "np: integer in [4, 100000], default auto", "Storn", "hammerstein", "function"})
+    EXPECT_NE(o.output.find(s), std::string::npos) << s;
+}
+
+TEST_F(Cli, BadCommandLineExitsWithTwo) {
+  EXPECT_EQ(hystbench("run").code, 2);
+  EXPECT_EQ(hystbench("frobnicate").code, 2);
+  EXPECT_EQ(hystbench("run --help").code, 0);
+}
+
+}  // namespace
