@@ -180,7 +180,8 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
   if (drawable_floor(ctx) > 0)
     s += "noise_floor = " + number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
   return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-             "set key top right opaque box spacing 1.2 samplen 2.5\n"
+             "# Curves fall from the upper left, so the lower left stays free.\n"
+             "set key bottom left opaque box spacing 1.2 samplen 2.5\n"
              "set style fill transparent solid 0.25 noborder\n";
 }
 
@@ -355,7 +356,7 @@ std::string loops_body(const std::string& dat, const std::string& title) {
   return "  set multiplot layout rows, cols title " + title + " noenhanced \\\n"
          "      margins char 9, char 2, char 3.5, char 3.5 spacing char 7, char 2\n"
          "  do for [i=1:panels] {\n"
-         "    set label 1 segment[i] at graph 0.03, graph 0.92 left front noenhanced\n"
+         "    set label 1 segment[i] at graph 0.04, graph 0.9 left front noenhanced\n"
          "    set xlabel (i > panels - cols ? \"Input u\" : \"\")\n"
          "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
          "    if (xstep[i] > 0) { set xtics xstep[i] } else { set xtics autofreq }\n"

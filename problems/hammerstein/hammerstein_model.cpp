@@ -31,16 +31,22 @@ struct MsdCoefficients {
 template <class Sink>
 void run_model(const HammersteinParams& p, const Eigen::VectorXd& u, double Ts, BoucWenForm form,
                Sink&& sink) {
+  // The recurrences are latency-bound: coefficients are normalised by e1
+  // once, and in each sum the previous sample's state is added last, so
+  // that only one multiply and one add separate consecutive samples.
   const MsdCoefficients m(p, Ts);
+  const double k_h0 = m.e / m.e1, k_h1 = m.f / m.e1, k_h2 = m.g / m.e1;
+  const double k_r1 = -m.f1 / m.e1, k_r2 = -m.g1 / m.e1;
   const double aL = p.alpha * p.L;
   const bool increment = form == BoucWenForm::Increment;
   double h = 0, u_prev = 0, h1_1 = 0, h1_2 = 0, r_1 = 0, r_2 = 0, r1_1 = 0, r1_2 = 0;
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     const double drive = increment ? u[k] - u_prev : u[k];
-    h = h + aL * drive - p.beta * std::abs(drive) * h - p.gamma * drive * std::abs(h);
+    // h + aL du - beta |du| h - gamma du |h|, grouped by h
+    h = (h * (1.0 - p.beta * std::abs(drive)) + aL * drive) - p.gamma * drive * std::abs(h);
     const double h1 = p.d1 * u[k] + p.d2 * u[k] * u[k] - h;
-    const double r = -(m.f1 * r_1 + m.g1 * r_2 - m.e * h1 - m.f * h1_1 - m.g * h1_2) / m.e1;
-    const double r1 = p.a * r_1 + p.b * r_2 - p.c * r1_1 - p.d * r1_2;
+    const double r = (k_h0 * h1 + k_h1 * h1_1 + k_h2 * h1_2 + k_r2 * r_2) + k_r1 * r_1;
+    const double r1 = (p.a * r_1 + p.b * r_2 - p.d * r1_2) - p.c * r1_1;
     if (!sink(k, r1)) return;
     u_prev = u[k];
     h1_2 = h1_1;
