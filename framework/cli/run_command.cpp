@@ -9,6 +9,7 @@
 #include "framework/core/registry.hpp"
 #include "framework/harness/campaign.hpp"
 #include "framework/harness/progress.hpp"
+#include "framework/io/measurement.hpp"
 #include "framework/io/trial_log.hpp"
 #include "framework/report/results_folder.hpp"
 
@@ -16,7 +17,7 @@ namespace hystbench::cli {
 namespace {
 
 struct RunOptions {
-  std::string experiment, out;
+  std::string experiment, out, columns;
   int threads = 0;
   long trials = 0;
   long long seed = -1;
@@ -52,6 +53,7 @@ void run(const RunOptions& o) {
   Experiment experiment = Experiment::load(o.experiment);
   if (o.trials > 0) experiment.trials = o.trials;
   if (o.seed >= 0) experiment.seed = static_cast<std::uint64_t>(o.seed);
+  if (!o.columns.empty()) experiment.problem["columns"] = ColumnMap::parse(o.columns).to_json();
   const auto problem = make_problem(experiment.problem, experiment.base_dir);
   const std::filesystem::path dir = o.out.empty() ? "out/" + experiment.name : o.out;
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
@@ -83,6 +85,8 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--trials", o->trials, "override the experiment's number of trials")
       ->check(CLI::Range(1L, 1000000L));
   cmd->add_option("--seed", o->seed, "override the experiment's seed")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--columns", o->columns,
+                  "data columns holding t, u, y (and segment), e.g. t=t_s,u=u_N,y=y_m");
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
   return [o] { run(*o); };
 }

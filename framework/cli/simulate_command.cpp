@@ -1,6 +1,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "framework/cli/commands.hpp"
 #include "framework/core/error.hpp"
@@ -37,8 +38,10 @@ void simulate(const SimulateOptions& o) {
   }
   std::filesystem::path truth_path(o.out);
   truth_path.replace_extension(".truth.json");
+  std::ostringstream noise;
+  noise << o.noise;
   const std::string command = "hystbench simulate --params " + o.params + " --excitation " +
-                              o.excitation + " --noise " + std::to_string(o.noise) +
+                              o.excitation + " --noise " + noise.str() +
                               " --seed " + std::to_string(o.seed) + " --out " + o.out;
   s.truth["generated_by"] = command;
   write_measurement(o.out, s.data,

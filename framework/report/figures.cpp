@@ -3,12 +3,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "framework/io/atomic_file.hpp"
 
@@ -18,14 +20,14 @@ namespace {
 
 // Okabe–Ito colours: distinguishable with the common colour-vision
 // deficiencies and still distinct when printed in grey.
-constexpr const char* kPalette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                    "#E69F00", "#56B4E9", "#000000"};
-constexpr int kPaletteSize = sizeof kPalette / sizeof kPalette[0];
+constexpr std::array<const char*, 7> kPalette{"#0072B2", "#D55E00", "#009E73", "#CC79A7",
+                                              "#E69F00", "#56B4E9", "#000000"};
 constexpr const char* kModelColour = "#0072B2";
 constexpr const char* kMeasuredColour = "#707070";
 constexpr const char* kResidualColour = "#D55E00";
 // More loop panels than this no longer fit a page legibly.
 constexpr std::size_t kMaxLoopPanels = 9;
+constexpr const char* kImageTypes[] = {".svg", ".png", ".pdf"};
 
 // A double-quoted gnuplot string. Every user-supplied text is also drawn
 // `noenhanced`, so '_' or '^' in a label are not read as markup.
@@ -36,6 +38,12 @@ std::string gp_string(const std::string& s) {
     out += (c == '\n' || c == '\r') ? ' ' : c;
   }
   return out + "\"";
+}
+
+// Labels end up in '#' comment lines of the data files.
+std::string one_line(std::string s) {
+  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return s;
 }
 
 std::string number(double x) {
@@ -108,7 +116,7 @@ struct ConvergenceData {
 int add_block(ConvergenceData& d, const std::string& title, const std::string& rows) {
   const int index = int(d.line_block.size() + d.band_block.size());
   d.text += (index ? "\n\n" : "") + std::string("# index ") + std::to_string(index) + ": " +
-            title + "\n# evaluations q25 median q75\n" + rows;
+            one_line(title) + "\n# evaluations q25 median q75\n" + rows;
   return index;
 }
 
@@ -132,7 +140,8 @@ ConvergenceData convergence_data(const std::vector<const ConvergenceCurve*>& cur
 // Decade labels read best, but a range narrower than a decade would have
 // none, so gnuplot's own labels are kept there.
 bool spans_a_decade(const std::vector<const ConvergenceCurve*>& curves, double floor) {
-  double lo = floor > 0 ? floor : std::numeric_limits<double>::infinity(), hi = std::max(floor, 0.0);
+  double lo = floor > 0 ? floor : std::numeric_limits<double>::infinity();
+  double hi = floor;
   for (const auto* c : curves)
     for (std::size_t i = 0; i < c->median.size(); ++i) {
       if (std::isfinite(c->q25[i]) && c->q25[i] > 0) lo = std::min(lo, c->q25[i]);
@@ -145,18 +154,21 @@ bool spans_a_decade(const std::vector<const ConvergenceCurve*>& curves, double f
 // The noise floor is the best any fit can do, so it is drawn as the line
 // the curves approach; a log axis cannot show a floor of zero.
 double drawable_floor(const ReportContext& ctx) {
-  return ctx.noise_floor && std::isfinite(*ctx.noise_floor) && *ctx.noise_floor > 0 ? *ctx.noise_floor : 0.0;
+  const double floor = ctx.noise_floor.value_or(0.0);
+  return std::isfinite(floor) && floor > 0 ? floor : 0.0;
 }
 
 std::string convergence_plot(const std::vector<const ConvergenceCurve*>& curves,
                              const ConvergenceData& data, double floor) {
   std::string plot = "  plot \\\n";
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    const std::string colour = std::string(" lc rgb \"") + kPalette[k % kPaletteSize] + "\"";
-    const std::string dash = " dt " + std::to_string(1 + int(k) / kPaletteSize);
+    const std::string colour = std::string(" lc rgb \"") + kPalette[k % kPalette.size()] + "\"";
+    // Past the palette, colours repeat with a new dash pattern.
+    const std::string dash = " dt " + std::to_string(1 + k / kPalette.size());
     const auto block = [](int i) { return "    \"convergence.dat\" index " + std::to_string(i); };
     if (data.band_block[k] >= 0)
-      plot += block(data.band_block[k]) + " using 1:2:4 with filledcurves" + colour + " notitle, \\\n";
+      plot += block(data.band_block[k]) + " using 1:2:4 with filledcurves" + colour +
+              " notitle, \\\n";
     plot += block(data.line_block[k]) + " using 1:3 with lines lw 2" + dash + colour + " title " +
             gp_string(curves[k]->label) + " noenhanced";
     plot += k + 1 < curves.size() ? ", \\\n" : "\n";
@@ -226,7 +238,7 @@ std::string loops_data(const std::vector<SegmentRuns>& segs, const Eigen::Vector
   std::string out;
   for (std::size_t k = 0; k < segs.size(); ++k) {
     out += (k ? "\n\n" : "") + std::string("# index ") + std::to_string(k) + ": " +
-           segs[k].name + "\n# u y_measured y_model\n";
+           one_line(segs[k].name) + "\n# u y_measured y_model\n";
     for (std::size_t r = 0; r < segs[k].runs.size(); ++r) {
       out += r ? "\n" : "";  // a single blank line breaks the line between runs
       for (Eigen::Index i = segs[k].runs[r].first; i < segs[k].runs[r].second; ++i)
@@ -298,7 +310,8 @@ std::string time_body(const TimeFigure& f) {
          "  unset label\n  unset title\n  unset key\n"
          "  set origin 0, 0\n  set size 1, 0.38\n  set tmargin 0.5\n  set bmargin 3.2\n"
          "  set offsets 0, 0, graph 0.05, graph 0.05\n"
-         "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n  set ylabel \"Residual\\ny − ŷ\"\n" +
+         "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n"
+         "  set ylabel \"Residual\\ny − ŷ\"\n" +
          tics("y", f.residual_step) +
          "  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
          "\" notitle\n  unset multiplot\n  unset arrow\n";
@@ -361,8 +374,9 @@ std::string loops_body(const std::string& dat, const std::string& title) {
          "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
          "    if (xstep[i] > 0) { set xtics xstep[i] } else { set xtics autofreq }\n"
          "    if (ystep[i] > 0) { set ytics ystep[i] } else { set ytics autofreq }\n"
-         "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom vertical maxrows 1 samplen 2.5 }"
-         " else { unset key }\n"
+         "    # One key for all panels, in one row above the first.\n"
+         "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom vertical maxrows 1 \\\n"
+         "                  samplen 2.5 } else { unset key }\n"
          "    plot " + data + "2 with lines lw 1 lc rgb \"" + kMeasuredColour +
          "\" title \"measured\", \\\n         " + data + "3 with lines lw 1.5 lc rgb \"" +
          kModelColour + "\" title \"model\"\n  }\n  unset multiplot\n  unset label\n";
@@ -387,10 +401,12 @@ std::string shell_quote(const std::string& s) {
   return out + "'";
 }
 
-// The line worth showing from gnuplot's messages: the first that is not a
-// warning (gnuplot stops at its first error), else the first line.
-std::string first_error_line(const fs::path& log) {
+// The line worth showing from one script's messages (those after byte
+// `from` of the log): the first that is not a warning, as gnuplot stops at
+// its first error; else the first line.
+std::string first_error_line(const fs::path& log, std::uintmax_t from) {
   std::ifstream in(log);
+  in.seekg(std::streamoff(from));
   std::string first;
   for (std::string line; std::getline(in, line);) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
@@ -398,6 +414,43 @@ std::string first_error_line(const fs::path& log) {
     if (first.empty()) first = line;
   }
   return first;
+}
+
+fs::path time_script(const fs::path& dir, const std::string& stem, const std::string& who,
+                     const Eigen::VectorXd& t, const Eigen::VectorXd& y,
+                     const Eigen::VectorXd& yhat, const std::vector<std::string>& segments) {
+  const std::string name = stem + "_time";
+  return write_script(
+      dir, name,
+      script_header(name, "measured and model output over time (top), residual (bottom)",
+                    stem + ".csv (t,u,y_measured,y_model,residual[,segment])") +
+          render_all_terminals(name, time_body(time_figure(stem, who, t, y, yhat, segments))));
+}
+
+fs::path loops_script(const fs::path& dir, const std::string& stem, const std::string& who,
+                      const std::vector<SegmentRuns>& segs, const Eigen::VectorXd& u,
+                      const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
+  const std::string name = stem + "_loops";
+  const std::size_t shown = std::min(segs.size(), kMaxLoopPanels);
+  std::string title = "Hysteresis loops of the best fit of " + who;
+  if (shown < segs.size())
+    title += " (first " + std::to_string(shown) + " of " + std::to_string(segs.size()) +
+             " segments)";
+  return write_script(
+      dir, name,
+      script_header(name, "input-output (u-y) loops, measured and model",
+                    name + ".dat (one index block per segment: u y_measured y_model)") +
+          loops_settings(segs, shown, u, y, yhat) +
+          render_all_terminals(name, loops_body(name + ".dat", gp_string(title))));
+}
+
+void check_sizes(const Eigen::VectorXd& t, const Eigen::VectorXd& u, const Eigen::VectorXd& y,
+                 const Eigen::VectorXd& yhat, const std::vector<std::string>& segments) {
+  const auto n = t.size();
+  if (u.size() != n || y.size() != n || yhat.size() != n ||
+      (!segments.empty() && Eigen::Index(segments.size()) != n))
+    throw std::invalid_argument("write_fit_figures: t, u, y_measured, y_model and segments "
+                                "(when given) must have the same length");
 }
 
 }  // namespace
@@ -409,16 +462,18 @@ fs::path write_convergence_figure(const fs::path& dir, const std::vector<Converg
     if (has_finite_median(c)) plotted.push_back(&c);
   const ConvergenceData data = convergence_data(plotted);
   write_file_atomic(dir / "convergence.dat", data.text);
-  std::string text = script_header("convergence",
-                                   "best-so-far fitness against function evaluations, one median "
-                                   "line and one\n# interquartile band per algorithm",
-                                   "convergence.dat (the finite rows of convergence.csv; per "
-                                   "algorithm one index\n# block for the median line and one for "
-                                   "the band: evaluations q25 median q75)");
+  std::string text = script_header(
+      "convergence",
+      "best-so-far fitness against function evaluations, one median\n# line and one "
+      "interquartile band per algorithm",
+      "convergence.dat (the finite rows of convergence.csv; per algorithm\n# one index block "
+      "for the median line and one for the band: evaluations q25 median q75)");
   text += convergence_settings(plotted, ctx);
   if (plotted.empty())
-    return write_script(dir, "convergence", text + "# No algorithm reached a finite fitness.\n");
-  return write_script(dir, "convergence", text + render_all_terminals("convergence", convergence_plot(plotted, data, drawable_floor(ctx))));
+    text += "# No algorithm reached a finite fitness: nothing to draw.\n";
+  else
+    text += render_all_terminals("convergence", convergence_plot(plotted, data, drawable_floor(ctx)));
+  return write_script(dir, "convergence", text);
 }
 
 std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& label,
@@ -427,24 +482,14 @@ std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& 
                                         const Eigen::VectorXd& y_model,
                                         const std::vector<std::string>& segments,
                                         const ReportContext& ctx) {
+  check_sizes(t, u, y_measured, y_model, segments);
   const std::string stem = "fit_" + file_label(label);
   const auto segs = segment_runs(segments, t.size());
   write_file_atomic(dir / (stem + ".csv"), fit_csv(t, u, y_measured, y_model, segments));
   write_file_atomic(dir / (stem + "_loops.dat"), loops_data(segs, u, y_measured, y_model));
-
   const std::string who = label + " on " + ctx.problem;
-  std::string time = script_header(stem + "_time", "measured and model output over time (top) and the residual (bottom)",
-                                   stem + ".csv (t,u,y_measured,y_model,residual[,segment])");
-  time += render_all_terminals(stem + "_time", time_body(time_figure(stem, who, t, y_measured, y_model, segments)));
-
-  const std::size_t shown = std::min(segs.size(), kMaxLoopPanels);
-  std::string loop_title = "Hysteresis loops of the best fit of " + who;
-  if (shown < segs.size())
-    loop_title += " (first " + std::to_string(shown) + " of " + std::to_string(segs.size()) + " segments)";
-  std::string loops = script_header(stem + "_loops", "input-output (u-y) loops, measured and model",
-                                    stem + "_loops.dat (one index block per segment: u y_measured y_model)");
-  loops += loops_settings(segs, shown, u, y_measured, y_model) + render_all_terminals(stem + "_loops", loops_body(stem + "_loops.dat", gp_string(loop_title)));
-  return {write_script(dir, stem + "_time", time), write_script(dir, stem + "_loops", loops)};
+  return {time_script(dir, stem, who, t, y_measured, y_model, segments),
+          loops_script(dir, stem, who, segs, u, y_measured, y_model)};
 }
 
 std::vector<fs::path> render_figures(const fs::path& dir, const std::vector<fs::path>& scripts,
@@ -460,15 +505,17 @@ std::vector<fs::path> render_figures(const fs::path& dir, const std::vector<fs::
   std::error_code ec;
   fs::remove(log, ec);
   for (const auto& script : scripts) {
-    for (const char* ext : {".svg", ".png", ".pdf"})  // so only fresh images are returned
-      fs::remove(dir / script.filename().replace_extension(ext), ec);
+    const fs::path name = script.filename();
+    for (const char* ext : kImageTypes)  // so that only fresh images are returned
+      fs::remove(dir / fs::path(name).replace_extension(ext), ec);
+    const std::uintmax_t log_before = fs::exists(log, ec) ? fs::file_size(log, ec) : 0;
     const std::string command = "cd " + shell_quote(dir.string()) + " && gnuplot " +
-                                shell_quote(script.filename().string()) + " 2>> gnuplot.log";
+                                shell_quote(name.string()) + " 2>> gnuplot.log";
     if (std::system(command.c_str()) != 0 && note.empty())
-      note = "gnuplot failed on " + script.filename().string() + ": " + first_error_line(log) +
+      note = "gnuplot failed on " + name.string() + ": " + first_error_line(log, log_before) +
              " (see " + log.string() + ")";
-    for (const char* ext : {".svg", ".png", ".pdf"}) {
-      const fs::path image = dir / script.filename().replace_extension(ext);
+    for (const char* ext : kImageTypes) {
+      const fs::path image = dir / fs::path(name).replace_extension(ext);
       if (fs::exists(image, ec) && fs::file_size(image, ec) > 0) images.push_back(image);
     }
   }

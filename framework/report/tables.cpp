@@ -128,7 +128,8 @@ double column_minimum(const std::vector<AlgorithmSummary>& rows, double Algorith
 
 std::vector<std::string> header_cells(Format f) {
   std::vector<std::string> cells{"Algorithm"};
-  for (const auto& c : kFitnessColumns) cells.push_back(f == Format::Markdown ? c.markdown : c.latex);
+  for (const auto& c : kFitnessColumns)
+    cells.push_back(f == Format::Markdown ? c.markdown : c.latex);
   for (const char* name : {"Iterations", "Evaluations", "Failed"}) cells.push_back(name);
   return cells;
 }
@@ -171,7 +172,8 @@ std::string caption(const ReportContext& ctx, Format f) {
   if (!ctx.budget.empty()) text += ", budget " + escape(ctx.budget, f);
   text += ", seed " + std::to_string(ctx.seed) + ".";
   if (ctx.noise_floor) {
-    text += " Noise floor (SSE of the true parameters): " + format_fitness(*ctx.noise_floor, f) + ".";
+    text += " Noise floor (SSE of the true parameters): " +
+            format_fitness(*ctx.noise_floor, f) + ".";
   }
   return text + " Fitness statistics over the successful trials; lowest value per column in bold.";
 }
@@ -197,7 +199,8 @@ std::string table_markdown(const std::vector<AlgorithmSummary>& rows, const Repo
   out += "| " + join(header, " | ") + " |\n|:---";
   for (std::size_t i = 1; i < header.size(); ++i) out += "|---:";
   out += "|\n";
-  for (const auto& cells : body_cells(rows, Format::Markdown)) out += "| " + join(cells, " | ") + " |\n";
+  for (const auto& cells : body_cells(rows, Format::Markdown))
+    out += "| " + join(cells, " | ") + " |\n";
   return out;
 }
 
@@ -209,13 +212,15 @@ std::string table_latex(const std::vector<AlgorithmSummary>& rows, const ReportC
   out += "  \\small\n  \\setlength{\\tabcolsep}{4pt}\n";
   out += "  \\begin{tabular}{l" + std::string(header.size() - 1, 'r') + "}\n    \\toprule\n";
   out += "    " + join(header, " & ") + " \\\\\n    \\midrule\n";
-  for (const auto& cells : body_cells(rows, Format::Latex)) out += "    " + join(cells, " & ") + " \\\\\n";
+  for (const auto& cells : body_cells(rows, Format::Latex))
+    out += "    " + join(cells, " & ") + " \\\\\n";
   out += "    \\bottomrule\n  \\end{tabular}\n\\end{table}\n";
   return out;
 }
 
 std::string table_csv(const std::vector<AlgorithmSummary>& rows) {
-  std::string out = "algorithm,best,f_avg,f_max,f_min,f_std,median,iterations,evaluations,failed,trials\n";
+  std::string out =
+      "algorithm,best,f_avg,f_max,f_min,f_std,median,iterations,evaluations,failed,trials\n";
   for (const auto& r : rows) {
     out += csv_field(r.label);
     for (double v : {r.best, r.mean, r.max, r.min, r.std, r.median, r.mean_iterations,
