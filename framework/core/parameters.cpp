@@ -2,24 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 namespace {
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
-}
-
-std::string number_text(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 void check_number(const ParamSpec& spec, const nlohmann::json& value,
                   const std::string& where) {

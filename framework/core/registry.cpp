@@ -1,6 +1,7 @@
 #include "framework/core/registry.hpp"
 
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 
@@ -8,9 +9,9 @@ template <class Info>
 const Info& Registry<Info>::find(const std::string& name, const std::string& what) const {
   auto it = entries_.find(name);
   if (it != entries_.end()) return it->second;
-  std::string known;
-  for (const auto& [key, info] : entries_) known += (known.empty() ? "" : ", ") + key;
-  throw InputError(what + ": unknown name '" + name + "'; known: " + known);
+  std::vector<std::string> known;
+  for (const auto& [key, info] : entries_) known.push_back(key);
+  throw InputError(what + ": unknown name '" + name + "'; known: " + join(known));
 }
 
 template class Registry<OptimizerInfo>;

@@ -1,5 +1,7 @@
 #include "framework/evolution/bound_handling.hpp"
 
+#include "framework/core/text.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -31,10 +33,7 @@ const std::vector<std::string>& bound_handling_names() {
 }
 
 BoundHandling bound_handling_from_string(const std::string& name) {
-  const auto& names = bound_handling_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw std::invalid_argument("unknown bound handling '" + name + "'");
-  return static_cast<BoundHandling>(it - names.begin());
+  return static_cast<BoundHandling>(index_of_name(bound_handling_names(), name, "bound handling"));
 }
 
 void repair(Eigen::Ref<Eigen::VectorXd> v, const Eigen::Ref<const Eigen::VectorXd>& parent,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "framework/core/text.hpp"
 #include "framework/evolution/population.hpp"
 
 namespace hystbench {
@@ -15,10 +16,7 @@ const std::vector<std::string>& de_strategy_names() {
 }
 
 DeStrategy de_strategy_from_string(const std::string& name) {
-  const auto& names = de_strategy_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw std::invalid_argument("unknown DE strategy '" + name + "'");
-  return static_cast<DeStrategy>(it - names.begin());
+  return static_cast<DeStrategy>(index_of_name(de_strategy_names(), name, "DE strategy"));
 }
 
 int pbest_count(double p, int np) {

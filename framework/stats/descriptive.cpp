@@ -27,8 +27,11 @@ double quantile(std::vector<double> v, double q) {
   const double h = q * double(v.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(h));
   const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  if (v[lo] == v[hi]) return v[lo];  // also keeps inf - inf out
-  return v[lo] + (h - double(lo)) * (v[hi] - v[lo]);
+  const double w = h - double(lo);
+  // Exact order statistics and ties return the value itself, so that an
+  // infinite neighbour never turns 0 * inf into NaN.
+  if (w == 0.0 || v[lo] == v[hi]) return v[lo];
+  return v[lo] + w * (v[hi] - v[lo]);
 }
 
 double median(const std::vector<double>& v) { return quantile(v, 0.5); }

@@ -1,28 +1,16 @@
 #include "problems/functions/function_problem.hpp"
 
-#include <charconv>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
 
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 namespace {
 
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
-}
-
-// Shortest text that reads back as the same double: 5 -> "5", 5.12 -> "5.12".
-std::string number_text(double v) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
-  return std::string(buffer, end);
-}
 
 const TestFunction& lookup(const std::string& name) {
   const TestFunction* f = find_test_function(name);

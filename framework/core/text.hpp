@@ -1,0 +1,20 @@
+#pragma once
+// Small text helpers shared by messages and listings.
+#include <string>
+#include <vector>
+
+namespace hystbench {
+
+// "a, b, c"
+std::string join(const std::vector<std::string>& items, const std::string& separator = ", ");
+
+// Shortest text that reads back as the same double: 5 -> "5", 5.12 -> "5.12",
+// 100000 -> "100000".
+std::string number_text(double v);
+
+// Position of `name` in `names`; throws std::invalid_argument naming `what`
+// and the valid names. Used to map option strings to enums.
+std::size_t index_of_name(const std::vector<std::string>& names, const std::string& name,
+                          const std::string& what);
+
+}  // namespace hystbench
