@@ -3,20 +3,23 @@
 #   make test   install what is missing, build, run the whole test suite
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# Keeps the inner build's output free of make's directory chatter.
+CMAKE_BUILD = env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL cmake --build $(BUILD) -j $(JOBS)
 
-.PHONY: demo test build deps clean
+.PHONY: demo test configure deps clean
 
 deps:
 	@scripts/install-deps.sh
 
-build: deps
+configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+demo: configure
+	@$(CMAKE_BUILD) --target hystbench
 	@$(BUILD)/hystbench run benchmarks/experiments/demo.json --out $(BUILD)/demo --force
 
-test: build
+test: configure
+	@$(CMAKE_BUILD)
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 clean:

@@ -12,7 +12,7 @@ namespace hystbench::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string params, excitation, out, form = "increment";
+  std::string params, excitation, out, form = "increment", input_unit, output_unit;
   double noise = 0.01;
   std::uint64_t seed = 1;
 };
@@ -42,8 +42,12 @@ void simulate(const SimulateOptions& o) {
   noise << o.noise;
   const std::string command = "hystbench simulate --params " + o.params + " --excitation " +
                               o.excitation + " --noise " + noise.str() +
-                              " --seed " + std::to_string(o.seed) + " --out " + o.out;
+                              " --seed " + std::to_string(o.seed) +
+                              (o.input_unit.empty() ? "" : " --input-unit " + o.input_unit) +
+                              (o.output_unit.empty() ? "" : " --output-unit " + o.output_unit) +
+                              " --out " + o.out;
   s.truth["generated_by"] = command;
+  s.truth["units"] = {{"t", "s"}, {"u", o.input_unit}, {"y", o.output_unit}};
   write_measurement(o.out, s.data,
                     {"Synthetic Hammerstein (MFC-like) data; true parameters and noise floor in " +
                          truth_path.filename().string(),
@@ -68,6 +72,8 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "noise seed")->capture_default_str();
   cmd->add_option("--form", o->form, "Bouc-Wen form")->capture_default_str()
       ->check(CLI::IsMember({"increment", "paper"}));
+  cmd->add_option("--input-unit", o->input_unit, "unit of u, recorded for figure axes (e.g. V)");
+  cmd->add_option("--output-unit", o->output_unit, "unit of y, recorded for figure axes (e.g. µm)");
   cmd->add_option("--out", o->out, "output CSV (the truth file is written beside it)")->required();
   return [o] { simulate(*o); };
 }

@@ -46,6 +46,9 @@ class SignalModelProblem {
   virtual const Eigen::VectorXd& measured() const = 0;
   // One label per sample (e.g. "sine_5Hz"), or empty.
   virtual const std::vector<std::string>& segments() const = 0;
+  // Physical units of u and y for axis titles ("V", "µm"); empty if unknown.
+  virtual std::string input_unit() const { return ""; }
+  virtual std::string output_unit() const { return ""; }
   virtual Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const = 0;
 };
 

@@ -76,10 +76,10 @@ std::string file_label(const std::string& label) {
 std::string script_header(const std::string& name, const std::string& shows,
                           const std::string& reads) {
   return "# " + name + ".gp: " + shows + "\n#\n# Reads " + reads +
-         ".\n# Re-render after editing: run `gnuplot " + name +
-         ".gp` inside this folder; it writes\n# " + name + ".svg, " + name + ".png and " + name +
-         ".pdf. The plot commands appear once, inside the\n# loop over the three output "
-         "formats at the end.\n\nset encoding utf8\n";
+         ".\n# To re-render after editing, run inside this folder:\n#     gnuplot " + name +
+         ".gp\n# It writes " + name + ".svg, " + name + ".png and " + name +
+         ".pdf: the plot commands\n# sit once inside the loop over these three formats at the "
+         "end.\n\nset encoding utf8\n";
 }
 
 // The same plot commands run once per output format, so a restyled script
@@ -187,7 +187,9 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
   std::string s = "set title " + gp_string(title) + ".\"\\n\"." + gp_string(subtitle) +
                   " noenhanced\n"
                   "set xlabel \"Function evaluations\"\nset ylabel \"Best-so-far fitness (SSE)\"\n"
-                  "set logscale xy\nset format x \"10^{%L}\"\n";
+                  "set logscale xy\nset format x \"10^{%L}\"\n"
+                  "# The axis ends at the last evaluation rather than the next decade.\n"
+                  "set xrange [1:*]\nset autoscale xfixmax\n";
   if (spans_a_decade(curves, drawable_floor(ctx))) s += "set format y \"10^{%L}\"\n";
   if (drawable_floor(ctx) > 0)
     s += "noise_floor = " + number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
@@ -255,42 +257,98 @@ struct Span {
   }
 };
 
-// 1, 2 or 5 times a power of ten, for at most `intervals` tic intervals:
+// 1, 2 or 5 times a power of ten, nearest to `intervals` tic intervals:
 // gnuplot's own spacing ignores the panel height and crowds short panels.
 // 0 (gnuplot's choice) when the data has no width.
-double tic_step(const Span& s, int intervals) {
+double tic_step(const Span& s, double intervals) {
   const double raw = (s.hi - s.lo) / intervals;
   if (!(raw > 0) || !std::isfinite(raw)) return 0.0;
   const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0})
-    if (m * decade >= raw * (1 - 1e-9)) return m * decade;
-  return 10.0 * decade;
+  double best = decade;
+  for (double m : {2.0, 5.0, 10.0})
+    if (std::abs(std::log(m * decade / raw)) < std::abs(std::log(best / raw))) best = m * decade;
+  return best;
 }
 
-std::string tics(const char* axis, double step) {
-  return std::string("  set ") + axis + "tics " + (step > 0 ? number(step) : "autofreq") + "\n";
+// About `intervals` tic intervals, only over the data, so none is drawn in
+// the strip kept free above it.
+std::string ytics(const Span& s, double intervals) {
+  const double step = tic_step(s, intervals);
+  if (step == 0) return "  set ytics autofreq\n";
+  const double first = std::ceil(s.lo / step) * step + 0.0;  // + 0.0: no "-0"
+  return "  set ytics " + number(first) + ", " + number(step) + ", " + number(s.hi) + "\n";
+}
+
+// Symmetric about zero, so a bias of the model shows as an off-centre
+// band; three tics fit even the short panel of the PDF.
+std::string residual_axis(const Span& s) {
+  const double m = std::max(std::abs(s.lo), std::abs(s.hi));
+  if (!(m > 0) || !std::isfinite(m)) return "  set yrange [-1:1]\n  set ytics autofreq\n";
+  // The largest 1, 2 or 5 times a power of ten that still fits, so the
+  // tics at +-step are inside the range.
+  const double decade = std::pow(10.0, std::floor(std::log10(m)));
+  const double step = m >= 5 * decade ? 5 * decade : (m >= 2 * decade ? 2 * decade : decade);
+  return "  set yrange [" + number(-1.08 * m) + ":" + number(1.08 * m) + "]\n  set ytics " +
+         number(-step) + ", " + number(step) + ", " + number(step) + "\n";
+}
+
+struct TimeSegment {
+  std::string name;
+  double begin, end;
+};
+
+// Contiguous stretches in time order: a name that comes back is a new one.
+std::vector<TimeSegment> time_segments(const std::vector<std::string>& segments,
+                                       const Eigen::VectorXd& t) {
+  std::vector<TimeSegment> out;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (i > 0 && segments[i] == segments[i - 1]) continue;
+    const double at = t[Eigen::Index(i)];
+    if (!out.empty()) out.back().end = at;
+    out.push_back({segments[i], at, at});
+  }
+  if (!out.empty()) out.back().end = t[t.size() - 1];
+  return out;
+}
+
+// Whether neighbouring names, centred on their stretches, would overlap in
+// the PDF, the most crowded output (10 pt letters up to 7 pt wide across
+// about 340 pt of plot).
+bool names_collide(const std::vector<TimeSegment>& segs) {
+  const double per_char = 7.0 / 340.0 * (segs.back().end - segs.front().begin);
+  for (std::size_t k = 1; k < segs.size(); ++k) {
+    const double distance = (segs[k].end - segs[k - 1].begin) / 2;  // between the centres
+    const auto letters = double(segs[k].name.size() + segs[k - 1].name.size()) / 2 + 1;
+    const double needed = letters * per_char;
+    if (distance < needed) return true;
+  }
+  return false;
 }
 
 // A dashed line where the segment changes and its name in a strip kept
-// free at the top of the panel, so a misfit can be traced to its excitation.
+// free above the data, so a misfit can be traced to its excitation. Names
+// that would run into each other alternate between two rows.
 std::string segment_markers(const std::vector<std::string>& segments, const Eigen::VectorXd& t) {
-  if (segments.empty()) return "  set offsets 0, 0, graph 0.05, graph 0.05\n";
-  std::string out = "  set offsets 0, 0, graph 0.16, graph 0.05\n";
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    if (i > 0 && segments[i] == segments[i - 1]) continue;
-    const std::string at = number(t[Eigen::Index(i)]);
-    if (i > 0)
-      out += "  set arrow from " + at + ", graph 0 to " + at +
+  const auto segs = time_segments(segments, t);
+  if (segs.empty()) return "  set offsets 0, 0, graph 0.05, graph 0.05\n";
+  const bool two_rows = names_collide(segs);
+  std::string out = std::string("  set offsets 0, 0, graph ") + (two_rows ? "0.45" : "0.22") +
+                    ", graph 0.05\n";
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    const std::string begin = number(segs[k].begin);
+    if (k > 0)
+      out += "  set arrow from " + begin + ", graph 0 to " + begin +
              ", graph 1 nohead lc rgb \"#a0a0a0\" dt 2 back\n";
-    out += "  set label " + gp_string(segments[i]) + " at " + at +
-           ", graph 0.955 left offset 0.4,0 noenhanced\n";
+    out += "  set label " + gp_string(segs[k].name) + " at " +
+           number((segs[k].begin + segs[k].end) / 2) + ", graph " +
+           (two_rows && k % 2 ? "0.81" : "0.92") + " center noenhanced\n";
   }
   return out;
 }
 
 struct TimeFigure {
   std::string csv, title, markers;
-  double output_step, residual_step;
+  std::string output_tics, residual_tics;
 };
 
 // Two panels sharing the time axis; margins in character units keep the
@@ -298,21 +356,20 @@ struct TimeFigure {
 std::string time_body(const TimeFigure& f) {
   const std::string data = gp_string(f.csv) + " skip 1 using 1:";
   return "  set datafile separator comma\n  set multiplot\n"
-         "  set autoscale fix\n  set lmargin 10\n  set rmargin 2\n"
+         "  set yrange [*:*]\n  set autoscale fix\n  set lmargin 10\n  set rmargin 2\n"
          "  set origin 0, 0.38\n  set size 1, 0.62\n  set tmargin 4\n  set bmargin 0.5\n"
          "  set title " + f.title + " noenhanced offset 0, 1.2\n" + f.markers +
-         "  set format x \"\"\n  unset xlabel\n  set ylabel \"Output y\"\n" +
-         tics("y", f.output_step) +
+         "  set format x \"\"\n  unset xlabel\n  set ylabel output_label\n" +
+         f.output_tics +
          "  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n"
          "  plot " + data + "3 with lines lw 1 lc rgb \"" + kMeasuredColour +
          "\" title \"measured\", \\\n       " + data + "4 with lines lw 1.5 lc rgb \"" +
          kModelColour + "\" title \"model\"\n"
          "  unset label\n  unset title\n  unset key\n"
          "  set origin 0, 0\n  set size 1, 0.38\n  set tmargin 0.5\n  set bmargin 3.2\n"
-         "  set offsets 0, 0, graph 0.05, graph 0.05\n"
          "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n"
-         "  set ylabel \"Residual\\ny − ŷ\"\n" +
-         tics("y", f.residual_step) +
+         "  set ylabel residual_label\n" +
+         f.residual_tics +
          "  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
          "\" notitle\n  unset multiplot\n  unset arrow\n";
 }
@@ -326,8 +383,8 @@ TimeFigure time_figure(const std::string& stem, const std::string& who, const Ei
     output.add(yhat[i]);
     residual.add(y[i] - yhat[i]);
   }
-  return {stem + ".csv", gp_string("Best fit of " + who + ": output over time"),
-          segment_markers(segments, t), tic_step(output, 4), tic_step(residual, 3)};
+  return {stem + ".csv", gp_string("Best fit of " + who),
+          segment_markers(segments, t), ytics(output, 4), residual_axis(residual)};
 }
 
 std::string number_array(const char* name, const std::vector<double>& v) {
@@ -339,6 +396,8 @@ std::string number_array(const char* name, const std::vector<double>& v) {
 std::string loops_settings(const std::vector<SegmentRuns>& segs, std::size_t shown,
                            const Eigen::VectorXd& u, const Eigen::VectorXd& y,
                            const Eigen::VectorXd& yhat) {
+  const std::size_t cols = shown <= 3 ? shown : (shown <= 4 ? 2 : 3);
+  const std::size_t rows = (shown + cols - 1) / cols;
   std::string names;
   std::vector<double> xstep, ystep;
   for (std::size_t k = 0; k < shown; ++k) {
@@ -346,17 +405,18 @@ std::string loops_settings(const std::vector<SegmentRuns>& segs, std::size_t sho
     Span su, sy;
     for (const auto& [begin, end] : segs[k].runs)
       for (Eigen::Index i = begin; i < end; ++i) su.add(u[i]), sy.add(y[i]), sy.add(yhat[i]);
-    xstep.push_back(tic_step(su, 4));
-    ystep.push_back(tic_step(sy, 4));
+    // Narrow and short panels leave room for fewer tic labels.
+    xstep.push_back(tic_step(su, cols < 3 ? 4 : 1.5));
+    ystep.push_back(tic_step(sy, rows < 2 ? 4 : 3));
   }
-  const std::size_t cols = shown <= 3 ? shown : (shown <= 4 ? 2 : 3);
-  const std::size_t rows = (shown + cols - 1) / cols;
   return "# One panel per segment: the first `panels` index blocks of the data\n"
          "# file, with tic spacing per panel (0: gnuplot's choice).\npanels = " +
          std::to_string(shown) + "\nrows = " + std::to_string(rows) + "\ncols = " +
          std::to_string(cols) + "\narray segment[" + std::to_string(shown) + "] = [" + names +
          "]\n" + number_array("xstep", xstep) + number_array("ystep", ystep) +
          "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\n"
+         "# Segment names stay readable where a loop runs under them.\n"
+         "set style textbox opaque noborder\n"
          "# Tight axes plus a small margin, so no loop touches the frame.\n"
          "set autoscale fix\nset offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
 }
@@ -369,9 +429,9 @@ std::string loops_body(const std::string& dat, const std::string& title) {
   return "  set multiplot layout rows, cols title " + title + " noenhanced \\\n"
          "      margins char 9, char 2, char 3.5, char 3.5 spacing char 7, char 2\n"
          "  do for [i=1:panels] {\n"
-         "    set label 1 segment[i] at graph 0.04, graph 0.9 left front noenhanced\n"
-         "    set xlabel (i > panels - cols ? \"Input u\" : \"\")\n"
-         "    set ylabel ((i - 1) % cols == 0 ? \"Output y\" : \"\")\n"
+         "    set label 1 segment[i] at graph 0.04, graph 0.9 left front boxed noenhanced\n"
+         "    set xlabel (i > panels - cols ? input_label : \"\")\n"
+         "    set ylabel ((i - 1) % cols == 0 ? output_label : \"\")\n"
          "    if (xstep[i] > 0) { set xtics xstep[i] } else { set xtics autofreq }\n"
          "    if (ystep[i] > 0) { set ytics ystep[i] } else { set ytics autofreq }\n"
          "    # One key for all panels, in one row above the first.\n"
@@ -416,7 +476,19 @@ std::string first_error_line(const fs::path& log, std::uintmax_t from) {
   return first;
 }
 
+// Axis titles as variables at the top of the script, easy to restyle.
+std::string axis_labels(const ReportContext& ctx) {
+  const auto with_unit = [](std::string text, const std::string& unit) {
+    return unit.empty() ? text : text + " [" + unit + "]";
+  };
+  return "input_label = " + gp_string(with_unit("Input u", ctx.input_unit)) +
+         "\noutput_label = " + gp_string(with_unit("Output y", ctx.output_unit)) +
+         // on two lines: the residual panel is short
+         "\nresidual_label = \"Residual\\n\" . " + gp_string(with_unit("y − ŷ", ctx.output_unit)) + "\n";
+}
+
 fs::path time_script(const fs::path& dir, const std::string& stem, const std::string& who,
+                     const std::string& axes,
                      const Eigen::VectorXd& t, const Eigen::VectorXd& y,
                      const Eigen::VectorXd& yhat, const std::vector<std::string>& segments) {
   const std::string name = stem + "_time";
@@ -424,15 +496,16 @@ fs::path time_script(const fs::path& dir, const std::string& stem, const std::st
       dir, name,
       script_header(name, "measured and model output over time (top), residual (bottom)",
                     stem + ".csv (t,u,y_measured,y_model,residual[,segment])") +
-          render_all_terminals(name, time_body(time_figure(stem, who, t, y, yhat, segments))));
+          axes + render_all_terminals(name, time_body(time_figure(stem, who, t, y, yhat, segments))));
 }
 
 fs::path loops_script(const fs::path& dir, const std::string& stem, const std::string& who,
+                      const std::string& axes,
                       const std::vector<SegmentRuns>& segs, const Eigen::VectorXd& u,
                       const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
   const std::string name = stem + "_loops";
   const std::size_t shown = std::min(segs.size(), kMaxLoopPanels);
-  std::string title = "Hysteresis loops of the best fit of " + who;
+  std::string title = "Best fit of " + who + ": u–y loops";
   if (shown < segs.size())
     title += " (first " + std::to_string(shown) + " of " + std::to_string(segs.size()) +
              " segments)";
@@ -440,7 +513,7 @@ fs::path loops_script(const fs::path& dir, const std::string& stem, const std::s
       dir, name,
       script_header(name, "input-output (u-y) loops, measured and model",
                     name + ".dat (one index block per segment: u y_measured y_model)") +
-          loops_settings(segs, shown, u, y, yhat) +
+          axes + loops_settings(segs, shown, u, y, yhat) +
           render_all_terminals(name, loops_body(name + ".dat", gp_string(title))));
 }
 
@@ -472,7 +545,8 @@ fs::path write_convergence_figure(const fs::path& dir, const std::vector<Converg
   if (plotted.empty())
     text += "# No algorithm reached a finite fitness: nothing to draw.\n";
   else
-    text += render_all_terminals("convergence", convergence_plot(plotted, data, drawable_floor(ctx)));
+    text += render_all_terminals("convergence",
+                                 convergence_plot(plotted, data, drawable_floor(ctx)));
   return write_script(dir, "convergence", text);
 }
 
@@ -488,8 +562,9 @@ std::vector<fs::path> write_fit_figures(const fs::path& dir, const std::string& 
   write_file_atomic(dir / (stem + ".csv"), fit_csv(t, u, y_measured, y_model, segments));
   write_file_atomic(dir / (stem + "_loops.dat"), loops_data(segs, u, y_measured, y_model));
   const std::string who = label + " on " + ctx.problem;
-  return {time_script(dir, stem, who, t, y_measured, y_model, segments),
-          loops_script(dir, stem, who, segs, u, y_measured, y_model)};
+  const std::string axes = axis_labels(ctx);
+  return {time_script(dir, stem, who, axes, t, y_measured, y_model, segments),
+          loops_script(dir, stem, who, axes, segs, u, y_measured, y_model)};
 }
 
 std::vector<fs::path> render_figures(const fs::path& dir, const std::vector<fs::path>& scripts,

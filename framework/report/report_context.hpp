@@ -13,6 +13,8 @@ struct ReportContext {
   long trials = 0;                 // trials per algorithm
   std::uint64_t seed = 0;
   std::optional<double> noise_floor;  // SSE of the true parameters, when known
+  std::string input_unit;          // of u, e.g. "V"; empty when unknown
+  std::string output_unit;         // of y, e.g. "µm"
 };
 
 }  // namespace hystbench

@@ -18,7 +18,13 @@ std::optional<double> noise_floor_of(const Problem& problem) {
 }
 
 ReportContext report_context(const Experiment& e, const Problem& problem) {
-  return {e.name, problem.name(), describe_budget(e.budget), e.trials, e.seed, noise_floor_of(problem)};
+  ReportContext ctx{e.name, problem.name(), describe_budget(e.budget), e.trials, e.seed,
+                    noise_floor_of(problem), "", ""};
+  if (const auto* model = dynamic_cast<const SignalModelProblem*>(&problem)) {
+    ctx.input_unit = model->input_unit();
+    ctx.output_unit = model->output_unit();
+  }
+  return ctx;
 }
 
 std::vector<AlgorithmSummary> summarize_all(const Experiment& e, const Problem& problem,

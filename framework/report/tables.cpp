@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 
 namespace hystbench {
@@ -58,7 +59,9 @@ std::string format_fitness(double x, Format f) {
   const int exponent = std::atoi(sci.c_str() + e_pos + 1);
   if (exponent < -3 || exponent >= 4) {
     if (f == Format::Markdown) return sci;
-    return "$" + sci.substr(0, e_pos) + "\\times10^{" + std::to_string(exponent) + "}$";
+    // std::string("$") first: `"$" + temporary` trips a false -Wrestrict in GCC 12.
+    return std::string("$") + sci.substr(0, e_pos) + "\\times10^{" + std::to_string(exponent) +
+           "}$";
   }
   const std::string fixed = printf_string("%.*f", x, 3 - exponent);
   return (f == Format::Latex && x < 0) ? "$" + fixed + "$" : fixed;
@@ -155,12 +158,6 @@ std::vector<std::vector<std::string>> body_cells(const std::vector<AlgorithmSumm
   return body;
 }
 
-std::string join(const std::vector<std::string>& cells, const std::string& separator) {
-  std::string out;
-  for (std::size_t i = 0; i < cells.size(); ++i) out += (i ? separator : "") + cells[i];
-  return out;
-}
-
 // What a reader of the table alone needs to know about the run.
 std::string caption(const ReportContext& ctx, Format f) {
   const bool md = f == Format::Markdown;
@@ -221,12 +218,16 @@ std::string table_latex(const std::vector<AlgorithmSummary>& rows, const ReportC
 std::string table_csv(const std::vector<AlgorithmSummary>& rows) {
   std::string out =
       "algorithm,best,f_avg,f_max,f_min,f_std,median,iterations,evaluations,failed,trials\n";
+  // Appended piece by piece: `"," + temporary` trips a false -Wrestrict in GCC 12.
+  const auto cell = [&out](const std::string& text) { out.append(",").append(text); };
   for (const auto& r : rows) {
     out += csv_field(r.label);
     for (double v : {r.best, r.mean, r.max, r.min, r.std, r.median, r.mean_iterations,
                      r.mean_evaluations})
-      out += "," + csv_number(v);
-    out += "," + std::to_string(r.failed) + "," + std::to_string(r.trials) + "\n";
+      cell(csv_number(v));
+    cell(std::to_string(r.failed));
+    cell(std::to_string(r.trials));
+    out += '\n';
   }
   return out;
 }

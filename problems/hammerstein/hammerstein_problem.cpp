@@ -26,14 +26,22 @@ Bounds apply_bound_overrides(Bounds bounds, const nlohmann::json& overrides) {
   return bounds;
 }
 
-std::optional<double> read_noise_floor(const std::filesystem::path& data_file) {
+// DATA.truth.json beside DATA.csv, or an empty object.
+nlohmann::json read_truth(const std::filesystem::path& data_file) {
   std::filesystem::path truth = data_file;
   truth.replace_extension(".truth.json");
   std::ifstream in(truth);
-  if (!in) return std::nullopt;
+  if (!in) return nlohmann::json::object();
   const auto j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("noise_floor_sse")) return std::nullopt;
-  return j["noise_floor_sse"].get<double>();
+  return j.is_object() ? j : nlohmann::json::object();
+}
+
+HammersteinProblem::Units read_units(const nlohmann::json& j, const std::string& where) {
+  require_known_keys(j, {"t", "u", "y"}, where);
+  for (const char* key : {"u", "y"})
+    if (j.contains(key) && !j[key].is_string())
+      throw InputError(where + "." + key + ": expected a unit name such as \"V\" or \"µm\"");
+  return {j.value("u", ""), j.value("y", "")};
 }
 
 std::unique_ptr<Problem> create(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
@@ -46,23 +54,29 @@ std::unique_ptr<Problem> create(const nlohmann::json& spec, const std::filesyste
   if (!form_json.is_string()) throw InputError("problem.bouc_wen_form: use \"increment\" or \"paper\"");
   Bounds bounds = HammersteinProblem::default_bounds();
   if (spec.contains("bounds")) bounds = apply_bound_overrides(bounds, spec["bounds"]);
+  const nlohmann::json truth = read_truth(path);
+  const auto units = spec.contains("units") ? read_units(spec["units"], "problem.units")
+                                            : read_units(truth.value("units", nlohmann::json::object()),
+                                                         path.string() + " truth units");
   return std::make_unique<HammersteinProblem>(read_measurement(path, columns),
                                               bouc_wen_form_from_string(form_json.get<std::string>()),
-                                              bounds);
+                                              bounds, units);
 }
 
 }  // namespace
 
-HammersteinProblem::HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds)
-    : data_(std::move(data)), form_(form), bounds_(std::move(bounds)) {
-  noise_floor_ = read_noise_floor(data_.source);
+HammersteinProblem::HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units)
+    : data_(std::move(data)), form_(form), bounds_(std::move(bounds)), units_(std::move(units)) {
+  const nlohmann::json truth = read_truth(data_.source);
+  if (truth.contains("noise_floor_sse") && truth["noise_floor_sse"].is_number())
+    noise_floor_ = truth["noise_floor_sse"].get<double>();
 }
 
 ProblemInfo HammersteinProblem::info() {
   return {"hammerstein",
           "13-parameter Hammerstein MFC model (Bouc-Wen, asymmetric static part, "
           "mass-spring-damper, ARX); fitness = SSE over the record",
-          {"type", "data", "columns", "bouc_wen_form", "bounds"},
+          {"type", "data", "columns", "bouc_wen_form", "bounds", "units"},
           create};
 }
 

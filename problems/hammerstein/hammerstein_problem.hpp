@@ -7,10 +7,12 @@
 //    "data": "problems/hammerstein/data/default.csv",
 //    "columns": {"t": "t_s", "u": "u_N", "y": "y_m"},     optional
 //    "bouc_wen_form": "increment" | "paper",               optional
-//    "bounds": {"beta": [0, 0.02], ...}}                   optional overrides
+//    "bounds": {"beta": [0, 0.02], ...},                   optional overrides
+//    "units": {"u": "V", "y": "µm"}}                        optional, for figures
 //
 // When a file DATA.truth.json sits beside DATA.csv (as `hystbench simulate`
-// writes it), its noise-floor SSE is reported with the results.
+// writes it), its noise-floor SSE is reported with the results, and its
+// units are used unless the experiment names others.
 #include <optional>
 
 #include "framework/core/problem.hpp"
@@ -22,7 +24,10 @@ namespace hystbench {
 
 class HammersteinProblem : public Problem, public SignalModelProblem {
  public:
-  HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds);
+  struct Units {
+    std::string u, y;
+  };
+  HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units = {});
 
   static ProblemInfo info();  // registry entry "hammerstein"
   // The documented default search box (README, "Hammerstein problem").
@@ -39,6 +44,8 @@ class HammersteinProblem : public Problem, public SignalModelProblem {
   const Eigen::VectorXd& measured() const override { return data_.y; }
   const std::vector<std::string>& segments() const override { return data_.segment; }
   Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
+  std::string input_unit() const override { return units_.u; }
+  std::string output_unit() const override { return units_.y; }
 
   std::optional<double> noise_floor() const { return noise_floor_; }
 
@@ -47,6 +54,7 @@ class HammersteinProblem : public Problem, public SignalModelProblem {
   BoucWenForm form_;
   Bounds bounds_;
   std::optional<double> noise_floor_;
+  Units units_;
 };
 
 }  // namespace hystbench
