@@ -1,6 +1,8 @@
 // The `hystbench` program as a user runs it: results, determinism across
 // thread counts, and bad input answered with one clear message and exit 2.
 #include <gtest/gtest.h>
+
+#include "tests/temp_dir.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -30,19 +32,7 @@ Outcome hystbench(const std::string& args) {
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hystbench_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
+  std::string write(const std::string& name, const std::string& text) { return temp_.write(name, text).string(); }
   // An experiment on `data` with one DE entry whose fields are `algorithm`.
   std::string experiment(const std::string& data, const std::string& algorithm = R"("name": "de")",
                          const std::string& budget = R"({"evaluations": 600})", int trials = 4) {
@@ -53,7 +43,8 @@ class Cli : public ::testing::Test {
   }
   static std::string default_data() { return std::string(HYSTBENCH_SOURCE_DIR) + "/problems/hammerstein/data/default.csv"; }
 
-  fs::path dir_;
+  hystbench::test_support::TempDir temp_;
+  const fs::path& dir_ = temp_.path();
 };
 
 nlohmann::json numbers_of(const fs::path& summary) {

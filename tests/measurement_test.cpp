@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_dir.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,36 +25,7 @@ using hystbench::write_measurement;
 
 namespace {
 
-// A folder of its own per test, removed afterwards, so tests can run in
-// parallel and leave nothing behind.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    path_ = fs::temp_directory_path() /
-            ("hystbench_measurement_" + std::string(info->name()) + "_" + std::to_string(stamp) +
-             "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  // Bytes are written as given: no line-end translation.
-  fs::path write(const std::string& name, const std::string& content) const {
-    const fs::path p = path_ / name;
-    std::ofstream(p, std::ios::binary) << content;
-    return p;
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using hystbench::test_support::TempDir;
 
 // The message of the InputError that reading `p` throws; fails the test if none.
 std::string read_error(const fs::path& p, const ColumnMap& columns = {}) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "tests/temp_dir.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -16,32 +18,11 @@
 namespace hystbench {
 namespace {
 
+using hystbench::test_support::TempDir;
+
 namespace fs = std::filesystem;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// A folder of its own per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    path_ = fs::temp_directory_path() /
-            ("hystbench_report_" + std::string(info->name()) + "_" + std::to_string(stamp) + "_" +
-             std::to_string(std::random_device{}()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 std::string read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -29,7 +29,8 @@ struct OptimizerInfo {
   std::string summary;   // one line
   std::string citation;  // reference; say here what is a reconstruction
   std::vector<ParamSpec> params;
-  std::function<std::unique_ptr<Optimizer>(const Params&)> create;
+  // Filled in by HYSTBENCH_OPTIMIZER; plugins leave it out.
+  std::function<std::unique_ptr<Optimizer>(const Params&)> create = nullptr;
 };
 
 struct ProblemInfo {

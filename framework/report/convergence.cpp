@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "framework/io/atomic_file.hpp"
+#include "framework/io/csv_format.hpp"
 #include "framework/stats/descriptive.hpp"
 
 namespace hystbench {
@@ -41,21 +42,6 @@ double best_so_far(const std::vector<TracePoint>& trace, long evaluations) {
       trace.begin(), trace.end(), evaluations,
       [](long e, const TracePoint& p) { return e < p.evaluations; });
   return after == trace.begin() ? kInf : std::prev(after)->best;
-}
-
-std::string csv_number(double x) {
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  if (std::isnan(x)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "framework/io/atomic_file.hpp"
+#include "framework/io/csv_format.hpp"
 
 namespace hystbench {
 namespace fs = std::filesystem;
@@ -51,19 +52,6 @@ std::string number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.10g", x);
   return buf;
-}
-
-std::string csv_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
 }
 
 std::string file_label(const std::string& label) {

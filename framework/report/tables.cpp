@@ -10,6 +10,7 @@
 
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
+#include "framework/io/csv_format.hpp"
 
 namespace hystbench {
 namespace {
@@ -173,19 +174,6 @@ std::string caption(const ReportContext& ctx, Format f) {
             format_fitness(*ctx.noise_floor, f) + ".";
   }
   return text + " Fitness statistics over the successful trials; lowest value per column in bold.";
-}
-
-std::string csv_number(double x) {
-  if (std::isnan(x)) return "";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  return printf_string("%.17g", x);
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ FunctionProblem::FunctionProblem(const std::string& function, int dimension,
                      number_text(hi));
   bounds_.lower = Eigen::VectorXd::Constant(dimension, lo);
   bounds_.upper = Eigen::VectorXd::Constant(dimension, hi);
-  for (int i = 1; i <= dimension; ++i) bounds_.names.push_back("x" + std::to_string(i));
+  for (int i = 1; i <= dimension; ++i) bounds_.names.push_back(std::string("x").append(std::to_string(i)));
 }
 
 std::unique_ptr<FunctionProblem> FunctionProblem::from_json(const nlohmann::json& spec) {
