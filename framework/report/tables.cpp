@@ -191,10 +191,13 @@ std::string table_markdown(const std::vector<AlgorithmSummary>& rows, const Repo
 
 std::string table_latex(const std::vector<AlgorithmSummary>& rows, const ReportContext& ctx) {
   const auto header = header_cells(Format::Latex);
-  std::string out = "% Requires \\usepackage{booktabs}.\n\\begin{table}[htbp]\n  \\centering\n";
+  std::string out =
+      "% Requires \\usepackage{booktabs}. Ten columns fill a one-column page; in a\n"
+      "% two-column paper use table* (or wrap the tabular in \\resizebox{\\linewidth}{!}{...}).\n"
+      "\\begin{table}[htbp]\n  \\centering\n";
   out += "  \\caption{" + caption(ctx, Format::Latex) + "}\n";
   out += "  \\label{tab:" + label_key(ctx.experiment) + "}\n";
-  out += "  \\small\n  \\setlength{\\tabcolsep}{4pt}\n";
+  out += "  \\footnotesize\n  \\setlength{\\tabcolsep}{3pt}\n";
   out += "  \\begin{tabular}{l" + std::string(header.size() - 1, 'r') + "}\n    \\toprule\n";
   out += "    " + join(header, " & ") + " \\\\\n    \\midrule\n";
   for (const auto& cells : body_cells(rows, Format::Latex))
