@@ -8,6 +8,10 @@ namespace hystbench::cli {
 
 using Action = std::function<void()>;
 
+// Adds --plugin PATH.so (repeatable) to a subcommand; the returned action
+// loads the libraries, to be called before anything looks at the registry.
+Action add_plugin_option(CLI::App& command);
+
 Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
 Action add_simulate_command(CLI::App& app);

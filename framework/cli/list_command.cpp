@@ -29,8 +29,9 @@ void print_problems() {
 
 Action add_list_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("list", "List optimizers (parameters, defaults, citations) and problems");
-  (void)cmd;
-  return [] {
+  auto load_plugins = add_plugin_option(*cmd);
+  return [load_plugins] {
+    load_plugins();
     print_optimizers();
     print_problems();
   };

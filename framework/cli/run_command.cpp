@@ -88,7 +88,11 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--columns", o->columns,
                   "data columns holding t, u, y (and segment), e.g. t=t_s,u=u_N,y=y_m");
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
-  return [o] { run(*o); };
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, load_plugins] {
+    load_plugins();
+    run(*o);
+  };
 }
 
 }  // namespace hystbench::cli
