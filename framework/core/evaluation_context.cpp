@@ -20,16 +20,27 @@ double EvaluationContext::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+std::optional<long> EvaluationContext::evaluation_limit() const {
+  if (phase_limit_ && budget_.evaluations) return std::min(*phase_limit_, *budget_.evaluations);
+  return phase_limit_ ? phase_limit_ : budget_.evaluations;
+}
+
 long EvaluationContext::remaining_evaluations() const {
-  if (!budget_.evaluations) return LONG_MAX;
-  return std::max(0L, *budget_.evaluations - evaluations_);
+  const auto limit = evaluation_limit();
+  return limit ? std::max(0L, *limit - evaluations_) : LONG_MAX;
+}
+
+void EvaluationContext::lift_evaluation_limit() {
+  phase_limit_.reset();
+  if (stop_reason_ == StopReason::Evaluations && remaining_evaluations() > 0)
+    stop_reason_ = StopReason::Running;
 }
 
 void EvaluationContext::check_budget() {
   if (stop_reason_ != StopReason::Running) return;
   if (budget_.target && best_value_ <= *budget_.target)
     stop_reason_ = StopReason::Target;
-  else if (budget_.evaluations && evaluations_ >= *budget_.evaluations)
+  else if (const auto limit = evaluation_limit(); limit && evaluations_ >= *limit)
     stop_reason_ = StopReason::Evaluations;
   else if (budget_.seconds && elapsed_seconds() >= *budget_.seconds)
     stop_reason_ = StopReason::Seconds;
@@ -52,7 +63,7 @@ bool EvaluationContext::next_iteration() {
 
 double EvaluationContext::progress() const {
   double tau = 0.0;
-  if (budget_.evaluations) tau = std::max(tau, double(evaluations_) / double(*budget_.evaluations));
+  if (const auto limit = evaluation_limit()) tau = std::max(tau, double(evaluations_) / double(*limit));
   if (budget_.iterations) tau = std::max(tau, double(iterations_) / double(*budget_.iterations));
   if (budget_.seconds) tau = std::max(tau, elapsed_seconds() / *budget_.seconds);
   return std::min(tau, 1.0);

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <chrono>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "framework/core/budget.hpp"
@@ -44,6 +45,12 @@ class EvaluationContext {
   bool stopped();
   // Evaluations still allowed (LONG_MAX without an evaluation budget).
   long remaining_evaluations() const;
+
+  // Polish support: the optimizer sees only the first `limit` evaluations
+  // as its budget (its schedules end there); lifting the limit hands the
+  // rest of the budget to the local search that follows.
+  void limit_evaluations(long limit) { phase_limit_ = limit; }
+  void lift_evaluation_limit();
   // Fraction of the budget used, in [0, 1]: the tau of schedules.
   double progress() const;
 
@@ -63,11 +70,13 @@ class EvaluationContext {
  private:
   void record(const Eigen::Ref<const Eigen::VectorXd>& x, double value);
   void check_budget();
+  std::optional<long> evaluation_limit() const;
 
   const Problem& problem_;
   Budget budget_;
   Rng rng_;
   std::chrono::steady_clock::time_point start_;
+  std::optional<long> phase_limit_;
   long evaluations_ = 0;
   long iterations_ = 0;
   double best_value_ = std::numeric_limits<double>::infinity();

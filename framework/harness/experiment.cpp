@@ -1,11 +1,15 @@
 #include "framework/harness/experiment.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
 #include "framework/core/registry.hpp"
+#include "framework/core/text.hpp"
+#include "framework/local/nlopt_search.hpp"
 
 namespace hystbench {
 namespace {
@@ -21,9 +25,23 @@ long positive_integer(const nlohmann::json& v, const std::string& key) {
   return v.get<long>();
 }
 
+PolishSpec read_polish(const nlohmann::json& j, const std::string& where) {
+  require_known_keys(j, {"algorithm", "fraction"}, where);
+  PolishSpec p;
+  p.algorithm = j.value("algorithm", p.algorithm);
+  const auto& local = nlopt_local_algorithms();
+  if (std::find(local.begin(), local.end(), p.algorithm) == local.end())
+    throw InputError(where + ".algorithm = \"" + p.algorithm + "\": use a local NLopt method: " + join(local));
+  const auto fraction = j.value("fraction", nlohmann::json(p.fraction));
+  if (!fraction.is_number() || !(fraction.get<double>() > 0 && fraction.get<double>() < 1))
+    throw InputError(where + ".fraction = " + fraction.dump() + ": must be between 0 and 1 (exclusive)");
+  p.fraction = fraction.get<double>();
+  return p;
+}
+
 AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
   const std::string where = "algorithms[" + std::to_string(index) + "]";
-  require_known_keys(a, {"name", "label", "params"}, where);
+  require_known_keys(a, {"name", "label", "params", "polish"}, where);
   if (!a.contains("name") || !a["name"].is_string())
     throw InputError(where + ".name: missing; give the optimizer's name (see `hystbench list`)");
   AlgorithmSpec spec;
@@ -32,6 +50,7 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
   const auto& info = OptimizerRegistry::instance().find(spec.name, where + ".name");
   const auto given = a.value("params", nlohmann::json::object());
   spec.params = validate_params(info.params, given, where + " (" + spec.label + ").params").json();
+  if (a.contains("polish")) spec.polish = read_polish(a["polish"], where + ".polish");
   return spec;
 }
 
@@ -67,6 +86,9 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
     std::set<std::string> labels;
     for (std::size_t i = 0; i < algorithms.size(); ++i) {
       e.algorithms.push_back(read_algorithm(algorithms[i], i));
+      if (e.algorithms.back().polish && !e.budget.evaluations)
+        throw InputError("algorithms[" + std::to_string(i) + "].polish needs an evaluation budget "
+                         "(budget.evaluations): it takes the last fraction of it");
       if (!labels.insert(e.algorithms.back().label).second)
         throw InputError("algorithms[" + std::to_string(i) + "].label \"" + e.algorithms.back().label +
                          "\" is used twice; give each algorithm a distinct label");
@@ -93,7 +115,11 @@ Experiment Experiment::load(const std::filesystem::path& file) {
 
 nlohmann::json Experiment::to_json() const {
   nlohmann::json algs = nlohmann::json::array();
-  for (const auto& a : algorithms) algs.push_back({{"name", a.name}, {"label", a.label}, {"params", a.params}});
+  for (const auto& a : algorithms) {
+    nlohmann::json j = {{"name", a.name}, {"label", a.label}, {"params", a.params}};
+    if (a.polish) j["polish"] = {{"algorithm", a.polish->algorithm}, {"fraction", a.polish->fraction}};
+    algs.push_back(j);
+  }
   nlohmann::json j = {{"name", name},       {"problem", problem}, {"budget", budget.to_json()},
                       {"trials", trials},   {"seed", seed},       {"algorithms", algs}};
   if (!description.empty()) j["description"] = description;

@@ -9,6 +9,7 @@
 //    "algorithms": [{"name": "de", "label": "DE", "params": {"np": 50}}]}
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,10 +18,19 @@
 
 namespace hystbench {
 
+// "polish": {"algorithm": "LN_BOBYQA", "fraction": 0.2}: the last fraction of
+// the evaluation budget goes to an NLopt local search from the best point,
+// in the same budget and trace.
+struct PolishSpec {
+  std::string algorithm = "LN_BOBYQA";
+  double fraction = 0.2;
+};
+
 struct AlgorithmSpec {
   std::string name;       // plugin name
   std::string label;      // unique within the experiment; defaults to name
   nlohmann::json params;  // validated, defaults filled in
+  std::optional<PolishSpec> polish;
 };
 
 struct Experiment {

@@ -1,10 +1,26 @@
 #include "framework/harness/trial_runner.hpp"
 
+#include <cmath>
 #include <exception>
 
 #include "framework/core/registry.hpp"
+#include "framework/local/nlopt_search.hpp"
 
 namespace hystbench {
+namespace {
+
+void run_with_polish(Optimizer& optimizer, const PolishSpec& polish, long evaluations,
+                     EvaluationContext& ctx) {
+  const long reserved = std::lround(polish.fraction * double(evaluations));
+  ctx.limit_evaluations(evaluations - reserved);
+  optimizer.run(ctx);
+  ctx.lift_evaluation_limit();
+  NloptSearch local;
+  local.algorithm = polish.algorithm;
+  run_nlopt(ctx, local, ctx.best_point(), ctx.remaining_evaluations());
+}
+
+}  // namespace
 
 TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
                       long trial) {
@@ -19,7 +35,11 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
   try {
     const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
     auto optimizer = info.create(Params(spec.params));
-    optimizer->run(ctx);
+    if (spec.polish) {
+      run_with_polish(*optimizer, *spec.polish, *experiment.budget.evaluations, ctx);
+    } else {
+      optimizer->run(ctx);
+    }
     ctx.finish();
   } catch (const std::exception& e) {
     ctx.fail();
