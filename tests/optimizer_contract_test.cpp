@@ -53,7 +53,13 @@ Experiment experiment_for(const std::string& optimizer, long evaluations) {
 // trials). 1e-6 unless an algorithm is known not to get there; each
 // exception states what was measured.
 double sphere10_level(const std::string& optimizer) {
-  static const std::map<std::string, double> known_weaker{};
+  // Measured medians of trials 0-2 at the default parameters (NP = 10 D):
+  // DERSF 1.0e-5 and DETVSF 7.9e-6 (DE/rand/1 with F of 0.75 on average,
+  // or 1.2 falling to 0.4: larger steps converge more slowly); the
+  // real-coded GA 3.8e-3 (SBX and polynomial mutation with eta = 20 keep
+  // their steps wide).
+  static const std::map<std::string, double> known_weaker{
+      {"dersf", 1e-4}, {"detvsf", 1e-4}, {"ga", 5e-2}};
   const auto it = known_weaker.find(optimizer);
   return it == known_weaker.end() ? 1e-6 : it->second;
 }

@@ -11,7 +11,7 @@ namespace hystbench {
 
 const std::vector<std::string>& de_strategy_names() {
   static const std::vector<std::string> names{"rand/1", "best/1", "current-to-best/1",
-                                               "current-to-pbest/1"};
+                                               "current-to-pbest/1", "pbest/1"};
   return names;
 }
 
@@ -46,8 +46,28 @@ Eigen::VectorXd de_mutant(DeStrategy strategy, const DePopulationView& pop, int 
       const auto r = distinct_indices(rng, np, 2, {i});
       return X.col(i) + F * (X.col(pbest) - X.col(i)) + F * (X.col(r[0]) - X.col(r[1]));
     }
+    case DeStrategy::Pbest1: {
+      const int pbest = pop.order[rng.integer(0, pop.pbest_count - 1)];
+      const auto r = distinct_indices(rng, np, 2, {i});
+      return X.col(pbest) + F * (X.col(r[0]) - X.col(r[1]));
+    }
   }
   throw std::logic_error("unhandled DE strategy");
+}
+
+Eigen::VectorXd de_neighbor_mutant(const Eigen::MatrixXd& X, const Eigen::VectorXd& f, int i,
+                                   double F, int neighbors, Rng& rng) {
+  const int np = static_cast<int>(X.cols());
+  const auto candidates = distinct_indices(rng, np, neighbors, {i});
+  int base = candidates.front();
+  for (int m : candidates)
+    if (f[m] < f[base]) base = m;
+  const auto r = distinct_indices(rng, np, 2, {i, base});
+  return X.col(base) + F * (X.col(r[0]) - X.col(r[1]));
+}
+
+int default_neighbor_count(int np) {
+  return std::min(np - 1, std::max(3, static_cast<int>(std::lround(0.1 * np))));
 }
 
 Eigen::VectorXd binomial_crossover(const Eigen::Ref<const Eigen::VectorXd>& target,

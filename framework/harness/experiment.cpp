@@ -49,7 +49,15 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
   spec.label = a.value("label", spec.name);
   const auto& info = OptimizerRegistry::instance().find(spec.name, where + ".name");
   const auto given = a.value("params", nlohmann::json::object());
-  spec.params = validate_params(info.params, given, where + " (" + spec.label + ").params").json();
+  const std::string params_key = where + " (" + spec.label + ").params";
+  spec.params = validate_params(info.params, given, params_key).json();
+  // Built once now, so that checks across parameters (elites < np, ...)
+  // fail before any output exists rather than in every trial.
+  try {
+    info.create(Params(spec.params));
+  } catch (const InputError& e) {
+    throw InputError(params_key + ": " + e.what());
+  }
   if (a.contains("polish")) spec.polish = read_polish(a["polish"], where + ".polish");
   return spec;
 }

@@ -1,14 +1,14 @@
 // Classic differential evolution, DE/x/1/bin (algorithms.md §1).
 //
-// Synchronous generations (§0.8): all trials of a generation are built from
-// the same population and evaluated in one batch, then greedy one-to-one
-// selection with the "<=" tie rule (§0.7).
+// Synchronous generations (§0.8) through the shared DE loop: all trials of
+// a generation are built from the same population and evaluated in one
+// batch, then greedy one-to-one selection with the "<=" tie rule (§0.7).
 #include <algorithm>
 
 #include "framework/core/registry.hpp"
 #include "framework/evolution/bound_handling.hpp"
+#include "framework/evolution/de_generation.hpp"
 #include "framework/evolution/de_operators.hpp"
-#include "framework/evolution/population.hpp"
 
 namespace hystbench {
 namespace {
@@ -27,7 +27,7 @@ class DifferentialEvolution : public Optimizer {
              ParamSpec::real("cr", 0.9, 0.0, 1.0, "binomial crossover rate CR"),
              ParamSpec::choice("strategy", "rand/1", de_strategy_names(), "mutation strategy"),
              ParamSpec::real("p", 0.05, 0.0, 1.0,
-                             "p-best fraction for current-to-pbest/1 (top max(2, round(p NP)))"),
+                             "p-best fraction for current-to-pbest/1 and pbest/1 (top max(2, round(p NP)))"),
              ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
                                "repair of trial components outside the box")}};
   }
@@ -42,36 +42,14 @@ class DifferentialEvolution : public Optimizer {
 
   void run(EvaluationContext& ctx) override {
     const int np = np_ > 0 ? np_ : std::max(20, 10 * ctx.dimension());
-    Eigen::MatrixXd X = uniform_population(ctx.bounds(), np, ctx.rng());
-    Eigen::VectorXd fx;
-    if (ctx.evaluate(X, fx) < np) return;
-
-    Eigen::MatrixXd U(ctx.dimension(), np);
-    Eigen::VectorXd fu;
-    while (ctx.next_iteration()) {
-      make_trials(ctx, X, fx, U);
-      const Eigen::Index evaluated = ctx.evaluate(U, fu);
-      for (Eigen::Index i = 0; i < evaluated; ++i) {
-        if (fu[i] <= fx[i]) {
-          X.col(i) = U.col(i);
-          fx[i] = fu[i];
-        }
-      }
-    }
+    run_synchronous_de(ctx, np, [&](const DeGeneration& g, Eigen::MatrixXd& U) {
+      const DePopulationView pop{g.X, g.order, pbest_count(p_, np)};
+      for (int i = 0; i < np; ++i)
+        U.col(i) = de_trial(g.X.col(i), de_mutant(strategy_, pop, i, f_, ctx.rng()), cr_, bounds_, ctx);
+    });
   }
 
  private:
-  void make_trials(EvaluationContext& ctx, const Eigen::MatrixXd& X, const Eigen::VectorXd& fx,
-                   Eigen::MatrixXd& U) const {
-    const auto order = rank_order(fx);
-    const DePopulationView pop{X, order, pbest_count(p_, static_cast<int>(X.cols()))};
-    for (int i = 0; i < X.cols(); ++i) {
-      const Eigen::VectorXd mutant = de_mutant(strategy_, pop, i, f_, ctx.rng());
-      U.col(i) = binomial_crossover(X.col(i), mutant, cr_, ctx.rng());
-      repair(U.col(i), X.col(i), ctx.bounds(), bounds_, ctx.rng());
-    }
-  }
-
   int np_;
   double f_, cr_, p_;
   DeStrategy strategy_;

@@ -1,0 +1,39 @@
+#pragma once
+// The synchronous DE loop of algorithms.md §1.1 for variants that differ
+// only in how they build trial vectors (DETVSF, DERSF, MEDE, AmFMMDE):
+// uniform initialisation, then per generation one batch of NP trials built
+// from the same population (§0.8), evaluated in one call, and greedy
+// one-to-one selection with the "<=" tie rule (§0.7).
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "framework/core/evaluation_context.hpp"
+#include "framework/evolution/bound_handling.hpp"
+
+namespace hystbench {
+
+// The population at the start of a generation.
+struct DeGeneration {
+  const Eigen::MatrixXd& X;       // one member per column
+  const Eigen::VectorXd& f;       // its fitness
+  const std::vector<int>& order;  // ranking, best first
+};
+
+// Fills U (dimension x NP) with the generation's trial vectors.
+using DeTrialBuilder = std::function<void(const DeGeneration&, Eigen::MatrixXd& U)>;
+// Sees the targets' and the trials' fitness of the first `evaluated` trials
+// before selection (for success counters).
+using DeOutcomeObserver = std::function<void(
+    const Eigen::VectorXd& f_target, const Eigen::VectorXd& f_trial, Eigen::Index evaluated)>;
+
+void run_synchronous_de(EvaluationContext& ctx, int np, const DeTrialBuilder& build,
+                        const DeOutcomeObserver& observe = nullptr);
+
+// Trial of one target: binomial crossover with the mutant, then repair of
+// the components outside the box against the target (§0.6).
+Eigen::VectorXd de_trial(const Eigen::Ref<const Eigen::VectorXd>& target,
+                         const Eigen::VectorXd& mutant, double CR, BoundHandling rule,
+                         EvaluationContext& ctx);
+
+}  // namespace hystbench

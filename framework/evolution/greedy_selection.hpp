@@ -1,0 +1,13 @@
+#pragma once
+// One-to-one greedy replacement with the "<=" tie rule (algorithms.md §0.7):
+// candidate i replaces member i when it is not worse.
+#include <Eigen/Core>
+
+namespace hystbench {
+
+// Considers only the first `evaluated` candidates (the rest were not
+// evaluated because the budget ran out).
+void replace_if_not_worse(Eigen::MatrixXd& X, Eigen::VectorXd& fx, const Eigen::MatrixXd& U,
+                          const Eigen::VectorXd& fu, Eigen::Index evaluated);
+
+}  // namespace hystbench

@@ -1,0 +1,50 @@
+#pragma once
+// Variation and selection operators of the real-coded GA (algorithms.md §5):
+// binary (k-ary) tournament, bounded SBX and bounded polynomial mutation in
+// the NSGA-II formulation, and the switchable alternatives of §5.4. Every
+// child they return lies inside the box.
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "framework/core/problem.hpp"
+#include "framework/core/rng.hpp"
+
+namespace hystbench {
+
+using ChildPair = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
+
+enum class RealCrossover { Sbx, BlxAlpha, Arithmetic };
+enum class RealMutation { Polynomial, Gaussian };
+
+const std::vector<std::string>& real_crossover_names();  // "sbx", "blx-alpha", "arithmetic"
+RealCrossover real_crossover_from_string(const std::string& name);
+const std::vector<std::string>& real_mutation_names();  // "polynomial", "gaussian"
+RealMutation real_mutation_from_string(const std::string& name);
+
+// Index of the winner of a tournament among `size` distinct members drawn
+// uniformly: lowest f wins, ties are broken uniformly at random.
+int tournament(const Eigen::VectorXd& f, int size, Rng& rng);
+
+// Bounded simulated binary crossover with distribution index eta (§5.2).
+ChildPair sbx_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
+                        const Bounds& bounds, double eta, Rng& rng);
+// BLX-alpha: each component uniform in the parents' interval widened by
+// alpha times its length on both sides, then clipped (§5.4).
+ChildPair blx_alpha_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
+                              const Bounds& bounds, double alpha, Rng& rng);
+// Whole-vector arithmetic crossover with one lambda = U(0,1) per pair (§5.4).
+ChildPair arithmetic_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
+                               const Bounds& bounds, Rng& rng);
+
+// Bounded polynomial mutation with index eta, each component with
+// probability pm (§5.3).
+void polynomial_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
+                         double eta, Rng& rng);
+// y_j += N(0, sigma (u_j - l_j)) with probability pm per component, then
+// clipped (§5.4).
+void gaussian_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
+                       double sigma, Rng& rng);
+
+}  // namespace hystbench
