@@ -196,32 +196,6 @@ TEST(CmaEs, ReachesAnOptimumOnTheBoundary) {
   for (double x : r.best_x) EXPECT_NEAR(x, 1.0, 1e-4);
 }
 
-TEST(CmaEs, SameSeedGivesIdenticalTrials) {
-  FunctionProblem rastrigin("rastrigin", 5);
-  const auto e = cma_experiment({}, 5000);
-  const auto a = run_trial(rastrigin, e, 0, 3);
-  const auto b = run_trial(rastrigin, e, 0, 3);
-  EXPECT_EQ(a.best, b.best);
-  EXPECT_EQ(a.best_x, b.best_x);
-  EXPECT_EQ(a.iterations, b.iterations);
-  ASSERT_EQ(a.trace.size(), b.trace.size());
-  for (std::size_t i = 0; i < a.trace.size(); ++i) {
-    EXPECT_EQ(a.trace[i].evaluations, b.trace[i].evaluations);
-    EXPECT_EQ(a.trace[i].best, b.trace[i].best);
-  }
-  const auto c = run_trial(rastrigin, e, 0, 4);
-  EXPECT_NE(a.best_x, c.best_x);
-}
-
-TEST(CmaEs, NeverExceedsTheBudgetEvenMidGeneration) {
-  FunctionProblem sphere("sphere", 3);
-  for (long budget : {7L, 55L, 1001L}) {
-    const auto r = run_trial(sphere, cma_experiment({}, budget), 0, 0);
-    EXPECT_EQ(r.evaluations, budget);
-    EXPECT_EQ(r.stop, StopReason::Evaluations);
-  }
-}
-
 TEST(CmaEs, WithoutRestartsAStoppingCriterionEndsTheTrial) {
   FunctionProblem sphere("sphere", 4);
   const auto r = run_trial(sphere, cma_experiment({{"restarts", "none"}}, 50000), 0, 0);

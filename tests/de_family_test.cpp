@@ -218,30 +218,6 @@ TEST(DeFamilyPlugins, ImproveSubstantiallyOnRastrigin5) {
   }
 }
 
-TEST(DeFamilyPlugins, SameSeedGivesIdenticalTrialsAndAnotherTrialDiffers) {
-  FunctionProblem rastrigin("rastrigin", 5);
-  for (const char* name : kPlugins) {
-    const auto e = experiment(name, nlohmann::json::object(), 3000);
-    const auto a = run_trial(rastrigin, e, 0, 3);
-    const auto b = run_trial(rastrigin, e, 0, 3);
-    EXPECT_EQ(a.best, b.best) << name;
-    EXPECT_EQ(a.best_x, b.best_x) << name;
-    EXPECT_EQ(a.trace.size(), b.trace.size()) << name;
-    EXPECT_NE(a.best_x, run_trial(rastrigin, e, 0, 4).best_x) << name;
-  }
-}
-
-TEST(DeFamilyPlugins, SpendExactlyTheEvaluationBudget) {
-  FunctionProblem sphere("sphere", 3);
-  for (const char* name : kPlugins) {
-    for (long budget : {7L, 55L, 1001L}) {
-      const auto r = run_trial(sphere, experiment(name, nlohmann::json::object(), budget), 0, 0);
-      EXPECT_EQ(r.evaluations, budget) << name;
-      EXPECT_EQ(r.stop, StopReason::Evaluations) << name;
-    }
-  }
-}
-
 TEST(DeFamilyPlugins, ConstantScheduleIsClassicDe) {
   // With f_min = f_max = F, DETVSF is DE/rand/1/bin: under the same label
   // (hence the same seed) it must repeat DE's trial bit for bit.

@@ -51,31 +51,6 @@ TEST(DifferentialEvolution, EveryStrategyImprovesOnRastrigin) {
   }
 }
 
-TEST(DifferentialEvolution, SameSeedGivesIdenticalTrials) {
-  FunctionProblem rastrigin("rastrigin", 5);
-  const auto e = de_experiment({{"np", 30}}, 3000);
-  const auto a = run_trial(rastrigin, e, 0, 3);
-  const auto b = run_trial(rastrigin, e, 0, 3);
-  EXPECT_EQ(a.best, b.best);
-  EXPECT_EQ(a.best_x, b.best_x);
-  ASSERT_EQ(a.trace.size(), b.trace.size());
-  for (std::size_t i = 0; i < a.trace.size(); ++i) {
-    EXPECT_EQ(a.trace[i].evaluations, b.trace[i].evaluations);
-    EXPECT_EQ(a.trace[i].best, b.trace[i].best);
-  }
-  const auto c = run_trial(rastrigin, e, 0, 4);
-  EXPECT_NE(a.best_x, c.best_x);
-}
-
-TEST(DifferentialEvolution, NeverExceedsTheBudgetEvenMidGeneration) {
-  FunctionProblem sphere("sphere", 3);
-  for (long budget : {7L, 20L, 55L, 1001L}) {
-    const auto r = run_trial(sphere, de_experiment({{"np", 20}}, budget), 0, 0);
-    EXPECT_EQ(r.evaluations, budget);
-    EXPECT_EQ(r.stop, StopReason::Evaluations);
-  }
-}
-
 TEST(DifferentialEvolution, IterationBudgetCountsGenerationsAfterInitialisation) {
   FunctionProblem sphere("sphere", 3);
   auto e = de_experiment({{"np", 20}}, 1000000);

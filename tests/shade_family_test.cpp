@@ -217,32 +217,6 @@ TEST_P(ShadeFamilyPlugin, ImprovesSubstantiallyOnRastrigin) {
   for (long trial = 0; trial < 3; ++trial) EXPECT_LT(run_trial(rastrigin, e, 0, trial).best, 1.0);
 }
 
-TEST_P(ShadeFamilyPlugin, SameSeedGivesIdenticalTrials) {
-  FunctionProblem rastrigin("rastrigin", 5);
-  const auto e = shade_experiment(GetParam(), nlohmann::json::object(), 3000);
-  const auto a = run_trial(rastrigin, e, 0, 3);
-  const auto b = run_trial(rastrigin, e, 0, 3);
-  EXPECT_EQ(a.best, b.best);
-  EXPECT_EQ(a.best_x, b.best_x);
-  ASSERT_EQ(a.trace.size(), b.trace.size());
-  for (std::size_t i = 0; i < a.trace.size(); ++i) {
-    EXPECT_EQ(a.trace[i].evaluations, b.trace[i].evaluations);
-    EXPECT_EQ(a.trace[i].best, b.trace[i].best);
-  }
-  const auto c = run_trial(rastrigin, e, 0, 4);
-  EXPECT_NE(a.best_x, c.best_x);
-}
-
-TEST_P(ShadeFamilyPlugin, EndsWithExactlyTheEvaluationBudget) {
-  FunctionProblem sphere("sphere", 3);
-  for (long budget : {7L, 55L, 1001L}) {
-    const auto e = shade_experiment(GetParam(), nlohmann::json::object(), budget);
-    const auto r = run_trial(sphere, e, 0, 0);
-    EXPECT_EQ(r.evaluations, budget);
-    EXPECT_EQ(r.stop, StopReason::Evaluations);
-  }
-}
-
 TEST_P(ShadeFamilyPlugin, IterationBudgetDrivesThePopulationReduction) {
   // Without an evaluation budget the reduction follows iterations / G:
   // 40 -> 4 over 10 generations, N after generation g = round(40 - 3.6 g).

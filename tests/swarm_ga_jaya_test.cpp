@@ -92,34 +92,6 @@ TEST(SwarmGaJaya, ImproveOnRastrigin) {
   }
 }
 
-TEST(SwarmGaJaya, SameSeedGivesIdenticalTrials) {
-  FunctionProblem rastrigin("rastrigin", 5);
-  for (const auto& a : defaults()) {
-    const auto first = run(rastrigin, a, 3000, 3);
-    const auto again = run(rastrigin, a, 3000, 3);
-    EXPECT_EQ(first.best, again.best) << label(a);
-    EXPECT_EQ(first.best_x, again.best_x) << label(a);
-    ASSERT_EQ(first.trace.size(), again.trace.size()) << label(a);
-    for (std::size_t i = 0; i < first.trace.size(); ++i) {
-      EXPECT_EQ(first.trace[i].evaluations, again.trace[i].evaluations);
-      EXPECT_EQ(first.trace[i].best, again.trace[i].best);
-    }
-    const auto other = run(rastrigin, a, 3000, 4);
-    EXPECT_NE(first.best_x, other.best_x) << label(a);
-  }
-}
-
-TEST(SwarmGaJaya, SpendExactlyTheEvaluationBudget) {
-  FunctionProblem sphere("sphere", 3);
-  for (const auto& a : defaults()) {
-    for (long budget : {7L, 55L, 1001L}) {
-      const auto r = run(sphere, a, budget);
-      EXPECT_EQ(r.evaluations, budget) << label(a);
-      EXPECT_EQ(r.stop, StopReason::Evaluations) << label(a);
-    }
-  }
-}
-
 long evaluations_after_iterations(const Algorithm& a, long iterations) {
   FunctionProblem sphere("sphere", 3);
   auto e = experiment(a, 1);
