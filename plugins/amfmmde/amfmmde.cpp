@@ -39,7 +39,7 @@ class Amfmmde : public Optimizer {
  public:
   static OptimizerInfo info() {
     return {"amfmmde",
-            "DE with an adaptive F and four mutations (best/1, rand/1, pbest/1, neighbor/1) chosen "
+            "[RECONSTRUCTION: F rule, strategy selection, neighbour count] DE with an adaptive F and four mutations (best/1, rand/1, pbest/1, neighbor/1) chosen "
             "per individual",
             kCitation,
             {ParamSpec::integer("np", nullptr, 4, 100000,

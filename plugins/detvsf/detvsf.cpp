@@ -84,7 +84,7 @@ class Detvsf : public ScheduledFDe {
   using ScheduledFDe::ScheduledFDe;
   static OptimizerInfo info() {
     return scheduled_f_info("detvsf",
-                            "DE/rand/1/bin with a scale factor decreasing linearly over the run",
+                            "DE/rand/1/bin with a scale factor decreasing linearly over the run (formula corrected, F range recalled)",
                             "time_varying");
   }
 };

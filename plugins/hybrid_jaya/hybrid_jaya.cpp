@@ -21,7 +21,7 @@ class HybridJaya : public Optimizer {
  public:
   static OptimizerInfo info() {
     return {"hybrid_jaya",
-            "HJaya (Jaya+DE hybrid, reconstruction): a Jaya phase then a DE/rand/1/bin phase "
+            "[RECONSTRUCTION] HJaya (Jaya+DE hybrid): a Jaya phase then a DE/rand/1/bin phase "
             "each iteration, normalised coordinates",
             "RECONSTRUCTION (algorithms.md §7.2): the hybrid Jaya cited for Bouc-Wen/MFC "
             "identification could not be located; this Jaya + DE/rand/1/bin hybrid is this "

@@ -17,7 +17,7 @@ class Mede : public Optimizer {
  public:
   static OptimizerInfo info() {
     return {"mede",
-            "DE with per-individual random F and a random choice of best/1, rand/1 or "
+            "[parameter values are a reconstruction] DE with per-individual random F and a random choice of best/1, rand/1 or "
             "current-to-pbest/1 mutation",
             "H. M. Umar, R. Yu, Z. Gao, H. Zhang, Enhancing model estimation accuracy and "
             "convergence rate in hysteresis modeling of MFC actuators using modified differential "
