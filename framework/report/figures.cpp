@@ -167,6 +167,29 @@ std::string convergence_plot(const std::vector<const ConvergenceCurve*>& curves,
   return plot;
 }
 
+// Upper end of the fitness axis: the highest median once 1 % of the budget
+// is spent. The first few candidates of a model that can diverge may have
+// astronomically large (finite) fitness; drawn in full they flatten every
+// curve against the axis. 0: leave the range to gnuplot.
+double fitness_axis_top(const std::vector<const ConvergenceCurve*>& curves) {
+  long last = 0;
+  for (const auto* c : curves)
+    if (!c->evaluations.empty()) last = std::max(last, c->evaluations.back());
+  double top = 0.0;
+  for (const auto* c : curves)
+    for (std::size_t i = 0; i < c->evaluations.size(); ++i)
+      if (c->evaluations[i] * 100 >= last && std::isfinite(c->median[i]))
+        top = std::max(top, c->median[i]);
+  return top;
+}
+
+// Many algorithms: the key goes beside the plot, where it covers nothing.
+std::string key_placement(std::size_t curves) {
+  if (curves > 6) return "set key outside right top opaque spacing 1.1 samplen 2.5\n";
+  return "# Curves fall from the upper left, so the lower left stays free.\n"
+         "set key bottom left opaque box spacing 1.2 samplen 2.5\n";
+}
+
 std::string convergence_settings(const std::vector<const ConvergenceCurve*>& curves,
                                  const ReportContext& ctx) {
   const std::string title = "Convergence — " + ctx.experiment + " (" + ctx.problem + ")";
@@ -181,10 +204,11 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
   if (spans_a_decade(curves, drawable_floor(ctx))) s += "set format y \"10^{%L}\"\n";
   if (drawable_floor(ctx) > 0)
     s += "noise_floor = " + number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
-  return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-             "# Curves fall from the upper left, so the lower left stays free.\n"
-             "set key bottom left opaque box spacing 1.2 samplen 2.5\n"
-             "set style fill transparent solid 0.25 noborder\n";
+  if (const double top = fitness_axis_top(curves); top > 0)
+    s += "# Fitness axis from the data to 3x the highest median after 1 % of the budget.\n"
+         "set yrange [*:" + number(3 * top) + "]\n";
+  return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" + key_placement(curves.size()) +
+         "set style fill transparent solid 0.25 noborder\n";
 }
 
 // ---- fit ------------------------------------------------------------------
