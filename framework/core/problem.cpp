@@ -7,4 +7,8 @@ bool Bounds::contains(const Eigen::Ref<const Eigen::VectorXd>& x) const {
          (x.array() <= upper.array()).all();
 }
 
+Eigen::VectorXd Bounds::clamp(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  return x.cwiseMax(lower).cwiseMin(upper);
+}
+
 }  // namespace hystbench

@@ -16,6 +16,8 @@ struct Bounds {
 
   int dimension() const { return static_cast<int>(lower.size()); }
   bool contains(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // x with every component moved into [lower, upper].
+  Eigen::VectorXd clamp(const Eigen::Ref<const Eigen::VectorXd>& x) const;
 };
 
 class Problem {

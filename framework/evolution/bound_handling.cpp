@@ -36,6 +36,11 @@ BoundHandling bound_handling_from_string(const std::string& name) {
   return static_cast<BoundHandling>(index_of_name(bound_handling_names(), name, "bound handling"));
 }
 
+ParamSpec bound_handling_param() {
+  return ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
+                           "repair of trial components outside the box");
+}
+
 void repair(Eigen::Ref<Eigen::VectorXd> v, const Eigen::Ref<const Eigen::VectorXd>& parent,
             const Bounds& bounds, BoundHandling rule, Rng& rng) {
   for (Eigen::Index j = 0; j < v.size(); ++j) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/parameters.hpp"
 #include "framework/core/problem.hpp"
 #include "framework/core/rng.hpp"
 
@@ -19,6 +20,9 @@ enum class BoundHandling {
 
 const std::vector<std::string>& bound_handling_names();
 BoundHandling bound_handling_from_string(const std::string& name);
+
+// The "bounds" parameter every DE-family plugin declares (default midpoint).
+ParamSpec bound_handling_param();
 
 // Repairs every violating component of `v` in place; `parent` is the target
 // vector (DE) or current position (PSO, Jaya).

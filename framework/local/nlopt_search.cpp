@@ -23,10 +23,9 @@ double objective(const std::vector<double>& x, std::vector<double>& /*gradient*/
   auto& o = *static_cast<Objective*>(data);
   if (o.used >= o.allowed || o.ctx.stopped()) throw nlopt::forced_stop();
   ++o.used;
-  Eigen::VectorXd point = Eigen::Map<const Eigen::VectorXd>(x.data(), Eigen::Index(x.size()));
   // Some methods step onto the bound with rounding past it.
-  point = point.cwiseMax(o.ctx.bounds().lower).cwiseMin(o.ctx.bounds().upper);
-  const double f = o.ctx.evaluate(point);
+  const double f = o.ctx.evaluate(
+      o.ctx.bounds().clamp(Eigen::Map<const Eigen::VectorXd>(x.data(), Eigen::Index(x.size()))));
   return std::min(f, kFiniteStandIn);
 }
 
@@ -77,7 +76,7 @@ std::string run_nlopt(EvaluationContext& ctx, const NloptSearch& search, Eigen::
                       long max_evaluations) {
   const long allowed = std::min(max_evaluations, ctx.remaining_evaluations());
   if (allowed <= 0 || ctx.stopped()) return "FORCED_STOP";
-  x0 = x0.cwiseMax(ctx.bounds().lower).cwiseMin(ctx.bounds().upper);
+  x0 = ctx.bounds().clamp(x0);
   std::vector<double> x(x0.begin(), x0.end());
   Objective data{ctx, allowed};
   nlopt::opt opt = make_optimizer(search, ctx.bounds(), allowed);

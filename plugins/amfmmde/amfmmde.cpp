@@ -63,8 +63,7 @@ class Amfmmde : public Optimizer {
                                "strategy choice: uniform 1/4 each, or SaDE success rates"),
              ParamSpec::integer("learning_period", 50, 1, 100000,
                                 "SaDE learning period LP in generations (selection = sade)"),
-             ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                               "repair of trial components outside the box")}};
+             bound_handling_param()}};
   }
 
   explicit Amfmmde(const Params& p)

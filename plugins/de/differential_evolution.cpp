@@ -28,8 +28,7 @@ class DifferentialEvolution : public Optimizer {
              ParamSpec::choice("strategy", "rand/1", de_strategy_names(), "mutation strategy"),
              ParamSpec::real("p", 0.05, 0.0, 1.0,
                              "p-best fraction for current-to-pbest/1 and pbest/1 (top max(2, round(p NP)))"),
-             ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                               "repair of trial components outside the box")}};
+             bound_handling_param()}};
   }
 
   explicit DifferentialEvolution(const Params& p)

@@ -41,8 +41,7 @@ OptimizerInfo scheduled_f_info(std::string name, std::string summary, std::strin
            ParamSpec::real("f_max", 1.2, 0.0, 2.0, "F at the start of the run (time_varying)"),
            ParamSpec::real("f_min", 0.4, 0.0, 2.0, "F at the end of the run (time_varying)"),
            ParamSpec::real("cr", 0.9, 0.0, 1.0, "binomial crossover rate CR"),
-           ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                             "repair of trial components outside the box")}};
+           bound_handling_param()}};
 }
 
 class ScheduledFDe : public Optimizer {

@@ -44,8 +44,7 @@ class Jso : public Optimizer {
              ParamSpec::real("p_max", 0.25, 0.0, 1.0, "p-best fraction at the start"),
              ParamSpec::real("p_min", 0.125, 0.0, 1.0,
                              "p-best fraction at the end (linear in the budget fraction)"),
-             ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                               "repair of trial components outside the box")}};
+             bound_handling_param()}};
   }
 
   explicit Jso(const Params& p) : np_(p.is_auto("np") ? 0 : p.integer("np")) {

@@ -36,8 +36,7 @@ class Lshade : public Optimizer {
                              "archive size as a multiple of the current population size"),
              ParamSpec::real("p", 0.11, 0.0, 1.0,
                              "p-best fraction (top max(2, round(p N)) members)"),
-             ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                               "repair of trial components outside the box")}};
+             bound_handling_param()}};
   }
 
   explicit Lshade(const Params& p) : np_(p.is_auto("np") ? 0 : p.integer("np")) {

@@ -33,8 +33,7 @@ class Mede : public Optimizer {
              ParamSpec::real("cr", 0.9, 0.0, 1.0, "binomial crossover rate CR"),
              ParamSpec::real("p", 0.1, 0.0, 1.0,
                              "p-best fraction for current-to-pbest/1 (top max(2, round(p NP)))"),
-             ParamSpec::choice("bounds", "midpoint", bound_handling_names(),
-                               "repair of trial components outside the box")}};
+             bound_handling_param()}};
   }
 
   explicit Mede(const Params& p)

@@ -58,19 +58,23 @@ std::unique_ptr<Problem> create(const nlohmann::json& spec, const std::filesyste
   const auto units = spec.contains("units") ? read_units(spec["units"], "problem.units")
                                             : read_units(truth.value("units", nlohmann::json::object()),
                                                          path.string() + " truth units");
+  std::optional<double> noise_floor;
+  if (truth.contains("noise_floor_sse") && truth["noise_floor_sse"].is_number())
+    noise_floor = truth["noise_floor_sse"].get<double>();
   return std::make_unique<HammersteinProblem>(read_measurement(path, columns),
                                               bouc_wen_form_from_string(form_json.get<std::string>()),
-                                              bounds, units);
+                                              bounds, units, noise_floor);
 }
 
 }  // namespace
 
-HammersteinProblem::HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units)
-    : data_(std::move(data)), form_(form), bounds_(std::move(bounds)), units_(std::move(units)) {
-  const nlohmann::json truth = read_truth(data_.source);
-  if (truth.contains("noise_floor_sse") && truth["noise_floor_sse"].is_number())
-    noise_floor_ = truth["noise_floor_sse"].get<double>();
-}
+HammersteinProblem::HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units,
+                                       std::optional<double> noise_floor)
+    : data_(std::move(data)),
+      form_(form),
+      bounds_(std::move(bounds)),
+      noise_floor_(noise_floor),
+      units_(std::move(units)) {}
 
 ProblemInfo HammersteinProblem::info() {
   return {"hammerstein",

@@ -27,7 +27,9 @@ class HammersteinProblem : public Problem, public SignalModelProblem {
   struct Units {
     std::string u, y;
   };
-  HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units = {});
+  // `noise_floor`: SSE of the true parameters, when known (reported with results).
+  HammersteinProblem(Measurement data, BoucWenForm form, Bounds bounds, Units units = {},
+                     std::optional<double> noise_floor = std::nullopt);
 
   static ProblemInfo info();  // registry entry "hammerstein"
   // The documented default search box (README, "Hammerstein problem").
