@@ -2,6 +2,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
+#include "framework/model/effect.hpp"
 
 namespace hystbench {
 
@@ -16,6 +17,7 @@ const Info& Registry<Info>::find(const std::string& name, const std::string& wha
 
 template class Registry<OptimizerInfo>;
 template class Registry<ProblemInfo>;
+template class Registry<EffectInfo>;
 
 std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohmann::json& params,
                                           const std::string& where) {

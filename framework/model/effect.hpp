@@ -1,0 +1,113 @@
+#pragma once
+// Physical effects: the building blocks of discovery models (DESIGN.md §4).
+//
+// A model is an ordered list of effects in a fixed signal chain
+//
+//   u -> [input] -> gain·v + [nonlinearity] -> [dynamics] -> [output] -> y
+//
+// Each effect is a plugin registered with one macro:
+//
+//   class Creep : public hystbench::Effect {
+//    public:
+//     static hystbench::EffectInfo info();   // name, stage, parameters, signature
+//     bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
+//                Eigen::Ref<Eigen::VectorXd> signal) const override;
+//   };
+//   HYSTBENCH_EFFECT(Creep)
+//
+// Effects work in normalised units: the framework divides u and y by their
+// RMS before fitting, so bounds are O(1) whatever the physical units, and
+// converts parameters back for reports (EffectParam::y_power / u_power).
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "framework/core/registry.hpp"
+
+namespace hystbench {
+
+enum class EffectStage { Input, Nonlinearity, Dynamics, Output };
+
+// "input", "nonlinearity", "dynamics", "output".
+std::string stage_name(EffectStage stage);
+
+struct EffectParam {
+  std::string name;
+  // Bounds and neutral value in normalised units. At the neutral value of
+  // all its parameters the effect leaves the signal exactly unchanged.
+  double lower = 0.0;
+  double upper = 0.0;
+  double neutral = 0.0;
+  // Physical value = normalised value · y_rms^y_power · u_rms^u_power, in
+  // the unit `unit` · y^y_power · u^u_power (e.g. y_power 1, u_power -1:
+  // µm/V). Parameters in s, Hz or plain numbers keep both powers at 0.
+  int y_power = 0;
+  int u_power = 0;
+  std::string unit;
+  std::string doc;
+};
+
+// What an effect sees besides its own parameters and signal.
+struct SignalContext {
+  double sample_time = 0.0;                     // s
+  const Eigen::VectorXd* time = nullptr;        // s, starting at 0
+  // The signal as it entered this effect's stage: v (normalised input after
+  // the input stage) for nonlinearity effects, w (the nonlinearity's output)
+  // for dynamics and output effects, u for input effects. Lets parallel
+  // branches (a second vibration mode, a hysteresis term) see the stage input.
+  const Eigen::VectorXd* stage_input = nullptr;
+  // Internal integration sub-steps per sample for effects that integrate an
+  // ODE (a model option; 0 = the effect's own default).
+  int substeps = 0;
+};
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  // Transforms `signal` in place; `p` holds the parameters in declared order
+  // (normalised units). Returns false when `p` makes the effect unstable or
+  // meaningless: the model's output is then +inf, never NaN.
+  virtual bool apply(std::span<const double> p, const SignalContext& ctx,
+                     Eigen::Ref<Eigen::VectorXd> signal) const = 0;
+};
+
+struct EffectInfo {
+  std::string name;     // catalog name, as written in --model lists
+  std::string summary;  // one line: the physical effect
+  std::string citation;
+  EffectStage stage = EffectStage::Output;
+  std::vector<EffectParam> params;
+  // Residual signature that points at this effect (DISCOVERY.md §2), as one
+  // plain sentence completing "adding <name> helps because ...".
+  std::string signature;
+  // Name of an effect this one generalises (e.g. a Bouc-Wen oscillator
+  // generalises "msd"): adding it replaces that effect, carrying over the
+  // parameters of the same name. Empty for most effects.
+  std::string extends;
+  // Filled in by HYSTBENCH_EFFECT.
+  std::function<std::unique_ptr<Effect>()> create = nullptr;
+};
+
+using EffectRegistry = Registry<EffectInfo>;
+
+namespace detail {
+template <class T>
+struct EffectRegistration {
+  EffectRegistration() {
+    EffectInfo info = T::info();
+    info.create = [] { return std::make_unique<T>(); };
+    EffectRegistry::instance().add(std::move(info));
+  }
+};
+}  // namespace detail
+
+}  // namespace hystbench
+
+#define HYSTBENCH_EFFECT(Class)                                                    \
+  namespace {                                                                      \
+  const ::hystbench::detail::EffectRegistration<Class> HYSTBENCH_CONCAT(           \
+      hystbench_effect_registration_, __LINE__);                                   \
+  }

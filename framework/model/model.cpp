@@ -1,0 +1,240 @@
+#include "framework/model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
+
+namespace hystbench {
+namespace {
+
+EffectParam gain_parameter() {
+  return {"gain", -20.0, 20.0, 1.0, 1, -1, "",
+          "static gain from input to output (the chain's effects have unit static gain)"};
+}
+
+std::string unit_power(const std::string& name, int power) {
+  if (power == 0) return "";
+  if (power == 1) return name;
+  return name + "^" + std::to_string(power);
+}
+
+std::string unit_text(const EffectParam& p, const std::string& u, const std::string& y) {
+  std::string num = p.unit;
+  std::string den;
+  auto put = [](std::string& into, const std::string& part) {
+    if (part.empty()) return;
+    into += (into.empty() ? "" : "·") + part;
+  };
+  put(p.y_power > 0 ? num : den, unit_power(y, std::abs(p.y_power)));
+  put(p.u_power > 0 ? num : den, unit_power(u, std::abs(p.u_power)));
+  if (den.empty()) return num;
+  return (num.empty() ? "1" : num) + "/" + den;
+}
+
+}  // namespace
+
+double physical_factor(const EffectParam& p, const SignalScales& s) {
+  return std::pow(s.y, p.y_power) * std::pow(s.u, p.u_power);
+}
+
+Model::Model(const std::vector<std::string>& effects, const std::string& where) {
+  build(effects, where);
+}
+
+Model Model::parse(const std::string& list, const std::string& where) {
+  std::vector<std::string> names;
+  std::string item;
+  for (std::size_t i = 0; i <= list.size(); ++i) {
+    if (i == list.size() || list[i] == ',') {
+      const auto b = item.find_first_not_of(" \t");
+      const auto e = item.find_last_not_of(" \t");
+      if (b != std::string::npos) names.push_back(item.substr(b, e - b + 1));
+      item.clear();
+    } else {
+      item += list[i];
+    }
+  }
+  if (names.size() == 1 && names[0] == "none") names.clear();
+  return Model(names, where);
+}
+
+void Model::build(std::vector<std::string> names, const std::string& where) {
+  const auto& registry = EffectRegistry::instance();
+  std::vector<const EffectInfo*> infos;
+  for (const auto& n : names) {
+    if (std::count(names.begin(), names.end(), n) > 1)
+      throw InputError(where + ": effect '" + n + "' is listed twice");
+    infos.push_back(&registry.find(n, where));
+  }
+  std::vector<int> order(names.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return infos[a]->stage < infos[b]->stage; });
+  names_.clear();
+  entries_.clear();
+  params_ = {gain_parameter()};
+  owner_ = {""};
+  for (int i : order) {
+    names_.push_back(names[i]);
+    entries_.push_back({infos[i], infos[i]->create(), dimension()});
+    for (const auto& p : infos[i]->params) {
+      params_.push_back(p);
+      owner_.push_back(names[i]);
+    }
+  }
+}
+
+bool Model::has(const std::string& effect) const {
+  return std::find(names_.begin(), names_.end(), effect) != names_.end();
+}
+
+std::string Model::text() const { return names_.empty() ? "none" : join(names_, ","); }
+
+std::vector<std::string> Model::parameter_names() const {
+  std::vector<std::string> out;
+  for (int i = 0; i < dimension(); ++i)
+    out.push_back(owner_[i].empty() ? params_[i].name : owner_[i] + "." + params_[i].name);
+  return out;
+}
+
+Bounds Model::bounds() const {
+  Bounds b;
+  b.lower.resize(dimension());
+  b.upper.resize(dimension());
+  for (int i = 0; i < dimension(); ++i) {
+    b.lower[i] = params_[i].lower;
+    b.upper[i] = params_[i].upper;
+  }
+  b.names = parameter_names();
+  return b;
+}
+
+Eigen::VectorXd Model::neutral() const {
+  Eigen::VectorXd x(dimension());
+  for (int i = 0; i < dimension(); ++i) x[i] = params_[i].neutral;
+  return x;
+}
+
+std::vector<int> Model::parameters_of(const std::string& effect) const {
+  std::vector<int> out;
+  for (int i = 0; i < dimension(); ++i)
+    if (owner_[i] == effect) out.push_back(i);
+  return out;
+}
+
+Model Model::with(const std::string& effect) const {
+  if (has(effect)) throw InputError("model already has effect '" + effect + "'");
+  const EffectInfo& info = EffectRegistry::instance().find(effect, "effect");
+  std::vector<std::string> names = names_;
+  auto replaced = std::find(names.begin(), names.end(), info.extends);
+  if (!info.extends.empty() && replaced != names.end())
+    *replaced = effect;
+  else
+    names.push_back(effect);
+  Model m(names);
+  m.substeps_ = substeps_;
+  return m;
+}
+
+Model Model::without(const std::string& effect) const {
+  std::vector<std::string> names = names_;
+  names.erase(std::remove(names.begin(), names.end(), effect), names.end());
+  Model m(names);
+  m.substeps_ = substeps_;
+  return m;
+}
+
+Eigen::VectorXd Model::carry_over(const Model& from,
+                                  const Eigen::Ref<const Eigen::VectorXd>& x_from) const {
+  Eigen::VectorXd x = neutral();
+  const auto from_names = from.parameter_names();
+  for (int i = 0; i < dimension(); ++i) {
+    std::vector<std::string> sources = {owner_[i]};
+    if (!owner_[i].empty()) {
+      const auto& ext = EffectRegistry::instance().find(owner_[i], "effect").extends;
+      if (!ext.empty()) sources.push_back(ext);
+    }
+    for (const auto& src : sources) {
+      const std::string key = src.empty() ? params_[i].name : src + "." + params_[i].name;
+      const auto j = std::find(from_names.begin(), from_names.end(), key);
+      if (j != from_names.end()) {
+        x[i] = x_from[j - from_names.begin()];
+        break;
+      }
+    }
+  }
+  return x;
+}
+
+bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
+                     Eigen::VectorXd& y) const {
+  // The signal of each stage starts as the previous stage's output, which
+  // parallel branches (SignalContext::stage_input) also see.
+  Eigen::VectorXd stage_input = data.u;
+  y = data.u;
+  SignalContext ctx{data.sample_time, &data.t, &stage_input, substeps_};
+  auto run_stage = [&](EffectStage stage) {
+    for (const auto& e : entries_) {
+      if (e.info->stage != stage) continue;
+      std::span<const double> p(x.data() + e.offset, e.info->params.size());
+      if (!e.effect->apply(p, ctx, y)) return false;
+    }
+    return true;
+  };
+  if (!run_stage(EffectStage::Input)) return false;
+  stage_input = y;
+  y *= x[0];
+  if (!run_stage(EffectStage::Nonlinearity)) return false;
+  for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output}) {
+    stage_input = y;
+    if (!run_stage(stage)) return false;
+  }
+  return y.allFinite();
+}
+
+nlohmann::json Model::physical_values(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                      const SignalScales& scales) const {
+  nlohmann::json out = nlohmann::json::object();
+  const auto names = parameter_names();
+  for (int i = 0; i < dimension(); ++i) out[names[i]] = x[i] * physical_factor(params_[i], scales);
+  return out;
+}
+
+nlohmann::json Model::physical_units(const std::string& u_unit, const std::string& y_unit) const {
+  nlohmann::json out = nlohmann::json::object();
+  const auto names = parameter_names();
+  const std::string u = u_unit.empty() ? "u" : u_unit;
+  const std::string y = y_unit.empty() ? "y" : y_unit;
+  for (int i = 0; i < dimension(); ++i) out[names[i]] = unit_text(params_[i], u, y);
+  return out;
+}
+
+Eigen::VectorXd Model::from_physical(const nlohmann::json& values, const SignalScales& scales,
+                                     const std::string& where) const {
+  if (!values.is_object()) throw InputError(where + ": expected an object of parameter values");
+  const auto names = parameter_names();
+  require_known_keys(values, names, where);
+  Eigen::VectorXd x(dimension());
+  for (int i = 0; i < dimension(); ++i) {
+    if (!values.contains(names[i]) || !values[names[i]].is_number())
+      throw InputError(where + ": missing number for parameter '" + names[i] +
+                       "' (model: " + text() + ")");
+    x[i] = values[names[i]].get<double>() / physical_factor(params_[i], scales);
+  }
+  return x;
+}
+
+std::string stage_name(EffectStage stage) {
+  switch (stage) {
+    case EffectStage::Input: return "input";
+    case EffectStage::Nonlinearity: return "nonlinearity";
+    case EffectStage::Dynamics: return "dynamics";
+    case EffectStage::Output: return "output";
+  }
+  return "?";
+}
+
+}  // namespace hystbench

@@ -1,0 +1,45 @@
+#pragma once
+// A measurement prepared for model fitting: signals divided by fixed scales
+// (so every effect's bounds are O(1)), time from 0, and which samples the
+// fit may see.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "framework/io/measurement.hpp"
+
+namespace hystbench {
+
+// Normalisation of u and y. A fit stores its scales, so that its parameters
+// mean the same thing when the model is simulated on other data.
+struct SignalScales {
+  double u = 1.0;
+  double y = 1.0;
+
+  // RMS of u and of y (1 for an all-zero signal).
+  static SignalScales of(const Measurement& m);
+  static SignalScales from_json(const nlohmann::json& j, const std::string& where);
+  nlohmann::json to_json() const;
+};
+
+struct ModelData {
+  Eigen::VectorXd t;  // s, t[0] = 0
+  Eigen::VectorXd u;  // u / scales.u
+  Eigen::VectorXd y;  // y / scales.y
+  double sample_time = 0.0;
+  SignalScales scales;
+  std::vector<std::string> segment;  // one label per sample, or empty
+  // 1 for samples the fit uses (estimation), 0 for held-out samples.
+  Eigen::VectorXd estimation;
+
+  ModelData() = default;
+  // Every sample is an estimation sample until a hold-out is applied.
+  ModelData(const Measurement& m, SignalScales scales);
+
+  Eigen::Index size() const { return t.size(); }
+  Eigen::Index estimation_count() const;
+  Eigen::Index heldout_count() const { return size() - estimation_count(); }
+};
+
+}  // namespace hystbench
