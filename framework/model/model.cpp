@@ -22,8 +22,10 @@ std::string unit_power(const std::string& name, int power) {
 }
 
 std::string unit_text(const EffectParam& p, const std::string& u, const std::string& y) {
-  std::string num = p.unit;
-  std::string den;
+  // A unit "1/s" is a denominator: with y_power 1 it reads "µm/s", not "1/s·µm".
+  const bool inverse = p.unit.rfind("1/", 0) == 0;
+  std::string num = inverse ? "" : p.unit;
+  std::string den = inverse ? p.unit.substr(2) : "";
   auto put = [](std::string& into, const std::string& part) {
     if (part.empty()) return;
     into += (into.empty() ? "" : "·") + part;

@@ -1,0 +1,52 @@
+// Backlash (play operator) on the input (input stage).
+//
+//   F[k] = max(v[k] − r, min(v[k] + r, F[k-1])),   signal[k] = F[k]
+//
+// Initial state F[-1] = 0: the chain starts at rest with zero input
+// (DESIGN.md §3), so a record starting at |v[0]| > r starts on a branch.
+// Neutral r = 0 (F = v exactly). A negative width is meaningless: apply
+// returns false. Units: r in u.
+#include <algorithm>
+#include <cmath>
+
+#include "framework/model/effect.hpp"
+
+namespace hystbench {
+namespace {
+
+class Backlash : public Effect {
+ public:
+  static EffectInfo info() {
+    EffectInfo i;
+    i.name = "backlash";
+    i.summary = "play operator of half-width r on the input (dead band at reversals)";
+    i.citation =
+        "Krasnosel'skii & Pokrovskii, Systems with Hysteresis, Springer 1989 (play operator); "
+        "Janocha & Kuhnen, Sens. Actuators A 79 (2000)";
+    i.stage = EffectStage::Input;
+    i.params = {{"r", 0.0, 1.0, 0.0, 0, 1, "", "half-width of the play (0 = no backlash)"}};
+    i.signature =
+        "the error sits at the reversal points where du/dt changes sign and the residual "
+        "correlates with sign(du/dt)";
+    return i;
+  }
+
+  bool apply(std::span<const double> p, const SignalContext&,
+             Eigen::Ref<Eigen::VectorXd> signal) const override {
+    const double r = p[0];
+    if (!std::isfinite(r) || r < 0.0) return false;
+    if (r == 0.0) return true;
+    double* s = signal.data();
+    double f = 0.0;
+    for (Eigen::Index k = 0; k < signal.size(); ++k) {
+      f = std::max(s[k] - r, std::min(s[k] + r, f));
+      s[k] = f;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+}  // namespace hystbench
+
+HYSTBENCH_EFFECT(hystbench::Backlash)

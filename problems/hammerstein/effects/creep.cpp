@@ -1,0 +1,75 @@
+// Creep: slow drift towards a higher level after a change (output stage).
+//
+//   x_i[k] = a_i·x_i[k-1] + (1 − a_i)·y0[k],   a_i = exp(−Ts/τ_i),  τ_i = 0.1, 1, 10, 100 s
+//   signal[k] += gamma · Σ_i x_i[k]
+//
+// y0 is the output stage's input (the output of the dynamics), so the result
+// does not depend on where offset or drift sit in the list. After a step of
+// size Δ the added term is gamma·Δ·Σ_i (1 − exp(−t/τ_i)), which grows by about
+// gamma·Δ per decade of time from 0.1 s to 100 s: a sum of lags standing in
+// for the logarithmic law y0·(1 + γ·log10(t/t0)) (Jung & Gweon 2000), with
+// the time constants fixed one decade apart so that one parameter (the
+// creep per decade) describes it and a 10-60 s staircase record identifies
+// it. The lags are exact discretisations of first-order lags (the step
+// response is sampled exactly), starting from rest (x_i[-1] = 0).
+// Neutral gamma = 0. Units: gamma is a ratio (y per y per decade).
+#include <array>
+#include <cmath>
+
+#include "framework/model/effect.hpp"
+
+namespace hystbench {
+namespace {
+
+constexpr std::array<double, 4> kTimeConstants{0.1, 1.0, 10.0, 100.0};  // s
+
+class Creep : public Effect {
+ public:
+  static EffectInfo info() {
+    EffectInfo i;
+    i.name = "creep";
+    i.summary =
+        "creep: gamma per decade of time, as first-order lags at 0.1, 1, 10 and 100 s driven by "
+        "the output";
+    i.citation =
+        "Jung & Gweon, Rev. Sci. Instrum. 71 (2000) (creep of piezo actuators); "
+        "Janocha & Kuhnen, Sens. Actuators A 79 (2000)";
+    i.stage = EffectStage::Output;
+    i.params = {{"gamma", -0.5, 0.5, 0.0, 0, 0, "",
+                 "creep per decade of time, relative to the instantaneous response"}};
+    i.signature =
+        "the residual drifts slowly and monotonically after level changes, has power below the "
+        "lowest excitation frequency and correlates with the low-pass-filtered input";
+    return i;
+  }
+
+  bool apply(std::span<const double> p, const SignalContext& ctx,
+             Eigen::Ref<Eigen::VectorXd> signal) const override {
+    const double gamma = p[0];
+    if (!std::isfinite(gamma)) return false;
+    if (gamma == 0.0) return true;
+    if (!(ctx.sample_time > 0.0) || !std::isfinite(ctx.sample_time)) return false;
+    if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
+    std::array<double, 4> a{}, b{};
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      a[i] = std::exp(-ctx.sample_time / kTimeConstants[i]);
+      b[i] = -std::expm1(-ctx.sample_time / kTimeConstants[i]);  // 1 − a, accurately
+    }
+    const double* y0 = ctx.stage_input->data();
+    double* s = signal.data();
+    double x0 = 0.0, x1 = 0.0, x2 = 0.0, x3 = 0.0;
+    for (Eigen::Index k = 0; k < signal.size(); ++k) {
+      x0 = a[0] * x0 + b[0] * y0[k];
+      x1 = a[1] * x1 + b[1] * y0[k];
+      x2 = a[2] * x2 + b[2] * y0[k];
+      x3 = a[3] * x3 + b[3] * y0[k];
+      s[k] += gamma * ((x0 + x1) + (x2 + x3));
+    }
+    return std::isfinite(x0 + x1 + x2 + x3);
+  }
+};
+
+}  // namespace
+}  // namespace hystbench
+
+HYSTBENCH_EFFECT(hystbench::Creep)

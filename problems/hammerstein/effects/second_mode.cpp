@@ -1,0 +1,82 @@
+// Second vibration mode in parallel with the chain's dynamics (dynamics stage).
+//
+//   m = H2·w,   H2(s) = 1 / (κ²s² + 2ζκs + 1),   κ = 1 / (2π·10^log10_f)
+//   signal[k] = (1 − g)·signal[k] + g·m[k]
+//
+// w is the stage input (the signal entering the dynamics stage); signal is
+// the output of the dynamics effects listed before this one (usually msd,
+// the first mode). The two modes share the static compliance: g is the
+// second mode's share of it (its participation), so the static gain stays
+// the model's gain and g cannot be traded against it; above both resonances
+// the response rolls off as a modal sum does. For a cantilever the second
+// mode sits near 6.3 times the first.
+// H2 is discretised bilinearly from rest, like msd. The frequency is a
+// log10 parameter because the mode may sit anywhere from a few Hz to well
+// above the first mode; at the neutral value g = 0 the frequency and damping
+// do not matter and the output is exactly unchanged. ζ ≤ 0 makes apply false.
+#include <cmath>
+#include <numbers>
+
+#include "framework/model/effect.hpp"
+
+namespace hystbench {
+namespace {
+
+class SecondMode : public Effect {
+ public:
+  static EffectInfo info() {
+    EffectInfo i;
+    i.name = "second_mode";
+    i.summary =
+        "second vibration mode: a parallel unit-gain resonance taking a share g of the static "
+        "compliance";
+    i.citation =
+        "Meirovitch, Fundamentals of Vibrations, 2001 (modal superposition; cantilever "
+        "ω₂/ω₁ ≈ 6.27); DISCOVERY.md §2";
+    i.stage = EffectStage::Dynamics;
+    i.params = {
+        {"g", -1.0, 1.0, 0.0, 0, 0, "", "participation: share of the static gain in the second mode"},
+        {"log10_f", 0.0, 4.5, 2.5, 0, 0, "log10(Hz)", "log10 of the second natural frequency"},
+        {"zeta", 0.005, 1.0, 0.05, 0, 0, "", "damping ratio of the second mode"},
+    };
+    i.signature =
+        "the residual spectrum has a narrow peak at a second frequency and the error bursts when "
+        "a sweep crosses it";
+    return i;
+  }
+
+  bool apply(std::span<const double> p, const SignalContext& ctx,
+             Eigen::Ref<Eigen::VectorXd> signal) const override {
+    const double g = p[0], log10_f = p[1], zeta = p[2];
+    if (!std::isfinite(g) || !std::isfinite(log10_f) || !std::isfinite(zeta)) return false;
+    if (g == 0.0) return true;
+    if (!(zeta > 0.0) || !(ctx.sample_time > 0.0) || !std::isfinite(ctx.sample_time))
+      return false;
+    if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
+    // c = 2κ/Ts; H2(z) = (1, 2, 1) / (c² + q + 1, 2 − 2c², c² − q + 1), q = 2ζc.
+    const double omega = 2.0 * std::numbers::pi * std::pow(10.0, log10_f);
+    const double c = 2.0 / (omega * ctx.sample_time);
+    const double c2 = c * c, q = 2.0 * zeta * c;
+    const double a0 = c2 + q + 1.0;
+    const double b = 1.0 / a0;
+    const double a1 = (2.0 - 2.0 * c2) / a0, a2 = (c2 - q + 1.0) / a0;
+    if (!std::isfinite(a1) || !std::isfinite(a2) || !(b > 0.0)) return false;
+    const double* w = ctx.stage_input->data();
+    double* s = signal.data();
+    double w1 = 0.0, w2 = 0.0, m1 = 0.0, m2 = 0.0;
+    for (Eigen::Index k = 0; k < signal.size(); ++k) {
+      const double m = (b * ((w[k] + 2.0 * w1) + w2) - a2 * m2) - a1 * m1;
+      s[k] += g * (m - s[k]);
+      w2 = w1;
+      w1 = w[k];
+      m2 = m1;
+      m1 = m;
+    }
+    return std::isfinite(m1);
+  }
+};
+
+}  // namespace
+}  // namespace hystbench
+
+HYSTBENCH_EFFECT(hystbench::SecondMode)
