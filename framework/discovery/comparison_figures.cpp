@@ -103,12 +103,12 @@ fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const n
                  "residual.dat (t residual)") +
       "residual_label = " + gp::quoted(with_unit("Residual y − ŷ", in.y_unit)) + "\n" +
       "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" +
-      "set title " + gp::quoted("Residual — " + title) + " noenhanced\n"
+      "set title " + gp::quoted("Residual — " + title) + " noenhanced offset 0, 1.2\n"
       "set xlabel \"Time t [s]\"\nset ylabel residual_label\n"
       "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\nset autoscale xfix\n"
-      "# Room above the data for the segment names and the key.\n"
-      "set offsets 0, 0, graph 0.25, graph 0.05\n"
-      "set key top right opaque horizontal samplen 2.5\n" +
+      "# Room above the data for the segment names; the key sits above the frame.\n"
+      "set offsets 0, 0, graph 0.2, graph 0.05\nset tmargin 4\n"
+      "set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n" +
       residual_marks(in) + gp::render_all_terminals("residual", body);
   return gp::write_script(dir, "residual", script);
 }

@@ -20,6 +20,7 @@ constexpr double kNearNoiseFloor = 2.0;
 constexpr std::size_t kWorstSegments = 10;
 
 std::string num(const json& j) {
+  if (j.is_number_integer()) return std::to_string(j.get<long long>());
   if (!j.is_number()) return "–";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", j.get<double>());
@@ -38,6 +39,14 @@ std::string cell(std::string s) {
 }
 
 std::string unit(const std::string& u) { return u.empty() ? "" : " [" + u + "]"; }
+// "1.2 µm" in running text.
+std::string with_unit(const std::string& number, const std::string& u) {
+  return u.empty() ? number : number + " " + u;
+}
+
+std::string p_text(const json& p) {
+  return p.is_number() && p.get<double>() < 1e-4 ? "< 0.0001" : num(p);
+}
 
 double value(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
@@ -47,9 +56,12 @@ std::string row(const std::vector<std::string>& cells) {
   return out + "\n";
 }
 
-std::string header_row(const std::vector<std::string>& cells, const std::string& align_first = ":--") {
+// First column left-aligned, the others right-aligned (numbers), except
+// the last when `text_last` (a column of words).
+std::string header_row(const std::vector<std::string>& cells, bool text_last = false) {
   std::string rule = "|";
-  for (std::size_t k = 0; k < cells.size(); ++k) rule += k == 0 ? " " + align_first + " |" : " --: |";
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    rule += k == 0 || (text_last && k + 1 == cells.size()) ? " :-- |" : " --: |";
   return row(cells) + rule + "\n";
 }
 
@@ -92,7 +104,7 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
           "lowest over orders 2–6 (order " + num(f["order"]) + ")";
   else
     how = "not estimated (too few samples)";
-  std::string out = "## Noise floor\n\nσ = " + num(f["sigma"]) + unit(in.y_unit) + ", " + how + ".\n\n";
+  std::string out = "## Noise floor\n\nσ = " + with_unit(num(f["sigma"]), in.y_unit) + ", " + how + ".\n\n";
   const double r = value(f["rmse_over_sigma"]);
   if (!std::isfinite(r))
     out += "RMSE / σ is undefined.\n";
@@ -105,6 +117,18 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
   return out + "\n";
 }
 
+// A peak that falls below half its height within three lags on either
+// side: a delay rather than a broad dynamic response.
+bool single_peak(const json& ccf, int lag) {
+  const auto at = [&](int tau) {
+    for (std::size_t i = 0; i < ccf["lags"].size(); ++i)
+      if (ccf["lags"][i] == tau) return std::abs(value(ccf["values"][i]));
+    return 0.0;
+  };
+  const double peak = at(lag);
+  return at(lag - 3) < 0.5 * peak && at(lag + 3) < 0.5 * peak;
+}
+
 std::string correlation_verdict(const json& m, double ts) {
   const json& r = m["residual"];
   const json& lb = r["ljung_box"];
@@ -113,12 +137,12 @@ std::string correlation_verdict(const json& m, double ts) {
   const int acf_out = r["acf"]["outside"];
   if (r["white"].get<bool>())
     out += "- **Whiteness**: the residual is white (Ljung–Box Q = " + num(lb["q"]) + " over " +
-           num(lb["lags"]) + " lags, p = " + num(lb["p_value"]) + " > 0.01); " +
+           num(lb["lags"]) + " lags, p = " + p_text(lb["p_value"]) + " > 0.01); " +
            std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
            " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
   else
     out += "- **Whiteness**: the residual is **not white** (Ljung–Box Q = " + num(lb["q"]) + " over " +
-           num(lb["lags"]) + " lags, p = " + num(lb["p_value"]) + " ≤ 0.01): it still has structure "
+           num(lb["lags"]) + " lags, p " + p_text(lb["p_value"]) + " ≤ 0.01): it still has structure "
            "in time; " + std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
            " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
   const json& c = m["residual"]["ccf"];
@@ -130,10 +154,11 @@ std::string correlation_verdict(const json& m, double ts) {
          num(peak) + " at τ = " + std::to_string(lag) + ". ";
   if (outside <= 1)
     out += "The residual is independent of the input within the band.\n";
+  else if (lag > 0 && single_peak(c, lag))
+    out += "The residual follows the input " + std::to_string(lag) + " samples earlier, with one "
+           "sharp peak: a time delay of about " + num(lag * ts) + " s is missing.\n";
   else if (lag > 0)
-    out += "The residual depends on past input: unmodelled dynamics; a single dominant peak at τ = " +
-           std::to_string(lag) + " would mean a delay of " + std::to_string(lag) + " samples (" +
-           num(lag * ts) + " s).\n";
+    out += "The residual depends on past input: unmodelled dynamics (rate dependence).\n";
   else if (lag == 0)
     out += "The residual follows the present input: the static part (gain, asymmetry, saturation) is off.\n";
   else
@@ -202,6 +227,36 @@ std::string time_table(const ComparisonInput& in, const json& m) {
   return out + "\n";
 }
 
+// Plain sentences over the breakdown tables that follow.
+std::string failure_summary(const ComparisonInput& in, const json& m) {
+  std::string out;
+  const auto& segs = m["by_segment"];
+  if (segs.size() >= 2) {
+    const json* worst = nullptr;
+    std::vector<double> rmse;
+    for (const json& s : segs)
+      if (s["rmse"].is_number()) {
+        rmse.push_back(value(s["rmse"]));
+        if (!worst || value(s["rmse"]) > value((*worst)["rmse"])) worst = &s;
+      }
+    std::sort(rmse.begin(), rmse.end());
+    if (worst && !rmse.empty() && rmse[rmse.size() / 2] > 0)
+      out += "- Worst segment: " + cell((*worst)["segment"]) + " (RMSE " +
+             with_unit(num((*worst)["rmse"]), in.y_unit) + ", " +
+             num(value((*worst)["rmse"]) / rmse[rmse.size() / 2]) + "× the median segment).\n";
+  }
+  const json& top = m["by_amplitude"].back();
+  const double total = value(m["all"]["sse"]), n = value(m["n"]);
+  if (total > 0 && n > 0)
+    out += "- The largest input amplitudes (top bin) hold " + num(100 * value(top["n"]) / n) +
+           " % of the samples and " + num(100 * value(top["sse"]) / total) + " % of the squared error.\n";
+  const json& b = m["by_branch"];
+  if (b["loading"]["rmse"].is_number() && b["unloading"]["rmse"].is_number())
+    out += "- RMSE while loading " + with_unit(num(b["loading"]["rmse"]), in.y_unit) +
+           ", while unloading " + with_unit(num(b["unloading"]["rmse"]), in.y_unit) + ".\n";
+  return out.empty() ? out : out + "\n";
+}
+
 struct SignatureDoc {
   const char* key;
   const char* meaning;
@@ -229,10 +284,10 @@ constexpr SignatureDoc kSignatureDocs[] = {
 std::string signature_table(const json& m) {
   std::string out = "## Residual signatures\n\nEach number points at one missing effect "
                     "(correlations in [−1, 1]; near 0 means no sign of it).\n\n" +
-                    header_row({"statistic", "value", "what it points at"}, ":--");
+                    header_row({"statistic", "value", "what it points at"}, true);
   for (const auto& d : kSignatureDocs)
     if (m["signatures"].contains(d.key))
-      out += row({std::string("`") + d.key + "`", num(m["signatures"][d.key]), d.meaning});
+      out += row({std::string("`") + d.key + "`", num(m["signatures"][d.key]), cell(d.meaning)});
   return out + "\n";
 }
 
@@ -269,7 +324,8 @@ std::string comparison_markdown(const ComparisonInput& in, const json& metrics, 
                     (in.y_unit.empty() ? std::string() : ", output in " + in.y_unit) +
                     ". All numbers are in metrics.json.\n\n";
   out += headline(in, metrics) + noise_floor(in, metrics) + correlation_verdict(metrics, ts);
-  out += "## Where the model fails\n\n" + segment_table(in, metrics) + amplitude_table(in, metrics) +
+  out += "## Where the model fails\n\n" + failure_summary(in, metrics) + segment_table(in, metrics) +
+         amplitude_table(in, metrics) +
          branch_table(in, metrics) + time_table(in, metrics);
   return out + signature_table(metrics) + figures(images, figure_note);
 }

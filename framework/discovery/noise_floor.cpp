@@ -52,12 +52,16 @@ Eigen::Index exact_period(const Eigen::VectorXd& u, Eigen::Index begin, Eigen::I
   return 0;
 }
 
-// Differences one period apart over [begin, end), the first period
-// skipped when at least three are there.
+// Differences one period apart over [begin, end), from the second half of
+// the periods on: the first periods still carry the start-up transient
+// (the initial loading curve, a decaying resonance). With m periods the
+// pairs (p, p + 1) for p >= floor(m / 2) are used, so two periods give none.
 void add_periodic(PairSum& sum, const Eigen::VectorXd& y, Eigen::Index begin, Eigen::Index end,
                   Eigen::Index p) {
-  const Eigen::Index skip = (end - begin) / p >= 3 ? p : 0;
-  sum.add(y, begin + skip, end - p, p);
+  const Eigen::Index periods = (end - begin) / p;
+  const Eigen::Index from = begin + (periods / 2) * p, to = begin + (periods - 1) * p;
+  if (to <= from) return;
+  sum.add(y, from, to, p);
   sum.period = sum.period ? sum.period : p;
 }
 
@@ -75,18 +79,25 @@ bool same_input(const Eigen::VectorXd& u, const SegmentRun& a, const SegmentRun&
   return spread > 0 && (ua - ub).norm() <= 0.05 * spread;
 }
 
-// A label that comes back with a run of the same length and input: the
-// earlier run is a period of the later one.
+// A label that comes back with runs of the same length and input: its
+// occurrences are periods, paired like add_periodic pairs periods (the
+// second half of the occurrences, each with the next).
 PairSum repeated_labels(const Eigen::VectorXd& u, const Eigen::VectorXd& y,
                         const std::vector<SegmentRun>& runs) {
   PairSum sum;
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    for (std::size_t j = i + 1; j < runs.size(); ++j) {
-      if (runs[j].label != runs[i].label) continue;
-      if (runs[j].size() == runs[i].size() && same_input(u, runs[i], runs[j]))
-        sum.add(y, runs[i].begin, runs[i].end, runs[j].begin - runs[i].begin);
-      break;  // only the next occurrence: consecutive periods
+  std::vector<std::string> labels;
+  for (const auto& r : runs) labels.push_back(r.label);
+  for (const auto& label : distinct_labels(labels)) {
+    std::vector<const SegmentRun*> occurrences;
+    for (const auto& r : runs)
+      if (r.label == label) occurrences.push_back(&r);
+    const std::size_t m = occurrences.size();
+    for (std::size_t p = m / 2; p + 1 < m; ++p) {
+      const SegmentRun& a = *occurrences[p];
+      const SegmentRun& b = *occurrences[p + 1];
+      if (a.size() == b.size() && same_input(u, a, b)) sum.add(y, a.begin, a.end, b.begin - a.begin);
     }
+  }
   return sum;
 }
 

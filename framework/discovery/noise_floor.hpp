@@ -5,11 +5,14 @@
 // Methods, tried in this order:
 //  "periodic"        u repeats exactly (to 1e-6 of its range) with a period of
 //                    P ≥ 4 samples, at least twice, inside a segment run or over
-//                    the whole record; or a segment label comes back with the
-//                    same length and the same input (RMS difference ≤ 5 % of its
-//                    spread). Then y_p − y_{p+1} holds only noise:
-//                    σ = RMS(y_k − y_{k+P}) / √2. With three or more periods the
-//                    first is skipped (start-up transient).
+//                    the whole record; or a segment label comes back (three or
+//                    more runs) with the same length and the same input (RMS
+//                    difference ≤ 5 % of its spread), each run being one period.
+//                    Then y_p − y_{p+1} holds only noise:
+//                    σ = RMS(y_k − y_{k+P}) / √2 over the second half of the
+//                    periods of each stretch (pairs p, p+1 with p ≥ ⌊m/2⌋ of m
+//                    periods): the first periods carry the start-up transient,
+//                    so a stretch needs three or more periods.
 //  "difference_mad"  otherwise: m-th differences d_k = Σ_j (−1)^j C(m,j) y_{k+j}
 //                    remove a smooth signal while white noise keeps variance
 //                    C(2m,m)σ²; σ_m = 1.4826·median|d| / √C(2m,m) (robust to the
@@ -25,7 +28,8 @@ struct NoiseFloor {
   double sigma = 0;
   std::string method;      // "periodic", "difference_mad" or "none"
   long pairs = 0;          // periodic: sample pairs compared
-  Eigen::Index period = 0; // periodic from u: period in samples (0 for repeated labels)
+  Eigen::Index period = 0; // periodic from u: period in samples of the first stretch used
+                           // (0 for repeated labels)
   int order = 0;           // difference_mad: order m that gave the minimum
 };
 
