@@ -14,6 +14,7 @@
 
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/report/gnuplot_script.hpp"
 
 namespace hystbench {
 namespace fs = std::filesystem;
@@ -32,14 +33,7 @@ constexpr const char* kImageTypes[] = {".svg", ".png", ".pdf"};
 
 // A double-quoted gnuplot string. Every user-supplied text is also drawn
 // `noenhanced`, so '_' or '^' in a label are not read as markup.
-std::string gp_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  return out + "\"";
-}
+std::string gp_string(const std::string& s) { return gnuplot::quoted(s); }
 
 // Labels end up in '#' comment lines of the data files.
 std::string one_line(std::string s) {
@@ -47,12 +41,7 @@ std::string one_line(std::string s) {
   return s;
 }
 
-std::string number(double x) {
-  if (!std::isfinite(x)) return "NaN";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", x);
-  return buf;
-}
+std::string number(double x) { return gnuplot::number(x); }
 
 std::string file_label(const std::string& label) {
   std::string out;
@@ -63,28 +52,17 @@ std::string file_label(const std::string& label) {
 
 std::string script_header(const std::string& name, const std::string& shows,
                           const std::string& reads) {
-  return "# " + name + ".gp: " + shows + "\n#\n# Reads " + reads +
-         ".\n# To re-render after editing, run inside this folder:\n#     gnuplot " + name +
-         ".gp\n# It writes " + name + ".svg, " + name + ".png and " + name +
-         ".pdf: the plot commands\n# sit once inside the loop over these three formats at the "
-         "end.\n\nset encoding utf8\n";
+  return gnuplot::header(name, shows, reads);
 }
 
 // The same plot commands run once per output format, so a restyled script
 // keeps the three images identical.
 std::string render_all_terminals(const std::string& name, const std::string& body) {
-  return "\ndo for [ext in \"svg png pdf\"] {\n"
-         "  if (ext eq \"svg\") { set terminal svg size 900,560 font \"Helvetica,12\" "
-         "background rgb \"white\" }\n"
-         "  if (ext eq \"png\") { set terminal pngcairo size 900,560 font \"Helvetica,11\" }\n"
-         "  if (ext eq \"pdf\") { set terminal pdfcairo size 6in,3.75in font \"Helvetica,10\" }\n"
-         "  set output \"" + name + ".\".ext\n" + body + "}\nunset output\n";
+  return gnuplot::render_all_terminals(name, body);
 }
 
 fs::path write_script(const fs::path& dir, const std::string& name, const std::string& text) {
-  const fs::path path = dir / (name + ".gp");
-  write_file_atomic(path, text);
-  return path;
+  return gnuplot::write_script(dir, name, text);
 }
 
 // ---- convergence ----------------------------------------------------------

@@ -1,0 +1,401 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "framework/core/rng.hpp"
+#include "framework/discovery/comparison.hpp"
+#include "framework/discovery/comparison_report.hpp"
+#include "framework/discovery/error_metrics.hpp"
+#include "framework/discovery/noise_floor.hpp"
+#include "framework/discovery/residual_correlation.hpp"
+#include "tests/temp_dir.hpp"
+
+namespace hystbench {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test_support::TempDir;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Eigen::VectorXd vec(std::initializer_list<double> v) {
+  Eigen::VectorXd out(Eigen::Index(v.size()));
+  Eigen::Index i = 0;
+  for (double x : v) out[i++] = x;
+  return out;
+}
+
+Eigen::VectorXd times(Eigen::Index n, double ts) {
+  return Eigen::VectorXd::LinSpaced(n, 0.0, double(n - 1) * ts);
+}
+
+Eigen::VectorXd gaussian(Eigen::Index n, double sigma, std::uint64_t seed) {
+  Rng rng(seed);
+  Eigen::VectorXd out(n);
+  for (Eigen::Index i = 0; i < n; ++i) out[i] = sigma * rng.normal();
+  return out;
+}
+
+// Every number in the document is finite (nlohmann::json would print NaN
+// as null, so the dump alone cannot show it).
+void expect_all_finite(const json& j, const std::string& where = "") {
+  if (j.is_number_float()) {
+    EXPECT_TRUE(std::isfinite(j.get<double>())) << "non-finite number at " << where;
+  } else if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) expect_all_finite(it.value(), where + "/" + it.key());
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) expect_all_finite(j[i], where + "/" + std::to_string(i));
+  }
+}
+
+// A sine input and a static, slightly nonlinear model output.
+ComparisonInput sine_case(Eigen::Index n, double ts, double f) {
+  ComparisonInput in;
+  in.sample_time = ts;
+  in.t = times(n, ts);
+  in.u = (2 * kPi * f * in.t.array()).sin().matrix() * 100.0;
+  in.y_model = 0.02 * in.u + (0.05 * in.u.array()).sin().matrix();
+  in.y = in.y_model;
+  return in;
+}
+
+// ---- error metrics ----------------------------------------------------------
+
+TEST(ComparisonMetrics, HandComputedOnTinyVectors) {
+  const Eigen::VectorXd y = vec({1, 2, 3, 4}), yhat = vec({1, 2, 3, 5});
+  const ErrorMetrics m = error_metrics(y, yhat);
+  // e = (0, 0, 0, -1); y - mean = (-1.5, -0.5, 0.5, 1.5), |.|^2 = 5; |y|^2 = 30.
+  EXPECT_EQ(m.n, 4);
+  EXPECT_DOUBLE_EQ(m.sse, 1.0);
+  EXPECT_DOUBLE_EQ(m.rmse, 0.5);
+  EXPECT_NEAR(m.fit_percent, 100.0 * (1.0 - 1.0 / std::sqrt(5.0)), 1e-12);
+  EXPECT_NEAR(m.relative_error, 1.0 / std::sqrt(30.0), 1e-15);
+  EXPECT_DOUBLE_EQ(m.max_abs_error, 1.0);
+  EXPECT_DOUBLE_EQ(m.mean_error, -0.25);
+
+  const ErrorMetrics part = error_metrics(y, yhat, {0, 3});
+  // e = (0, -1); y = (1, 4), |y - mean|^2 = 4.5, |y|^2 = 17.
+  EXPECT_EQ(part.n, 2);
+  EXPECT_DOUBLE_EQ(part.rmse, std::sqrt(0.5));
+  EXPECT_NEAR(part.fit_percent, 100.0 * (1.0 - 1.0 / std::sqrt(4.5)), 1e-12);
+  EXPECT_NEAR(part.relative_error, 1.0 / std::sqrt(17.0), 1e-15);
+}
+
+TEST(ComparisonMetrics, UndefinedNumbersAreNullNotNaN) {
+  const Eigen::VectorXd y = vec({2, 2, 2}), yhat = vec({1, 2, 3});
+  const json empty = to_json(error_metrics(y, yhat, {}));
+  EXPECT_EQ(empty["n"], 0);
+  for (const char* key : {"sse", "rmse", "fit_percent", "relative_error", "max_abs_error"})
+    EXPECT_TRUE(empty[key].is_null()) << key;
+
+  const json one = to_json(error_metrics(y, yhat, {0}));
+  EXPECT_DOUBLE_EQ(one["rmse"].get<double>(), 1.0);
+  EXPECT_TRUE(one["fit_percent"].is_null());
+
+  const json constant = to_json(error_metrics(y, yhat));
+  EXPECT_TRUE(constant["fit_percent"].is_null());  // y has no spread
+  EXPECT_TRUE(constant["relative_error"].is_number());
+
+  const json zero = to_json(error_metrics(Eigen::VectorXd::Zero(3), yhat));
+  EXPECT_TRUE(zero["relative_error"].is_null());
+}
+
+// ---- compare_signals ----------------------------------------------------------
+
+TEST(ComparisonSignals, DegenerateInputsGiveNaNFreeJson) {
+  std::vector<ComparisonInput> cases;
+  for (Eigen::Index n : {1, 2, 3, 7}) {
+    ComparisonInput in;
+    in.t = times(n, 0.01);
+    in.u = Eigen::VectorXd::Constant(n, 3.0);  // constant input
+    in.y = Eigen::VectorXd::Constant(n, 1.0);  // constant output
+    in.y_model = in.y;                         // zero residual
+    cases.push_back(in);
+  }
+  ComparisonInput diverged = sine_case(50, 0.01, 2.0);
+  diverged.y_model[10] = kInf;
+  cases.push_back(diverged);
+  ComparisonInput zeros = sine_case(40, 0.01, 2.0);
+  zeros.y.setZero();
+  zeros.y_model.setZero();
+  zeros.segment.assign(40, "a");
+  zeros.estimation = Eigen::VectorXd::Zero(40);
+  cases.push_back(zeros);
+  for (const auto& in : cases) {
+    const json m = compare_signals(in);
+    SCOPED_TRACE("n = " + std::to_string(in.t.size()));
+    expect_all_finite(m);
+    EXPECT_EQ(json::parse(m.dump()), m);
+    EXPECT_TRUE(m["signatures"].is_object());
+  }
+}
+
+TEST(ComparisonSignals, RejectsMismatchedLengths) {
+  ComparisonInput in = sine_case(20, 0.01, 1.0);
+  in.y_model = Eigen::VectorXd::Zero(19);
+  EXPECT_THROW(compare_signals(in), std::invalid_argument);
+}
+
+TEST(ComparisonSignals, PartsAndBreakdownsCoverEverySample) {
+  ComparisonInput in = sine_case(600, 0.001, 5.0);
+  in.y += gaussian(600, 0.1, 11);
+  in.segment.assign(600, "a");
+  std::fill(in.segment.begin() + 200, in.segment.begin() + 400, "b");
+  std::fill(in.segment.begin() + 400, in.segment.end(), "c");
+  in.estimation = Eigen::VectorXd::Ones(600);
+  in.estimation.segment(300, 300).setZero();  // "b" is half and half, "c" held out
+  const json m = compare_signals(in);
+  EXPECT_EQ(m["estimation"]["n"].get<long>() + m["heldout"]["n"].get<long>(), 600);
+  const auto sum_n = [](const json& groups) {
+    long n = 0;
+    for (const auto& g : groups) n += g["n"].get<long>();
+    return n;
+  };
+  EXPECT_EQ(sum_n(m["by_amplitude"]), 600);
+  EXPECT_EQ(sum_n(m["by_time"]), 600);
+  EXPECT_EQ(m["by_time"].size(), 10u);
+  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() + m["by_branch"]["unloading"]["n"].get<long>() +
+                m["by_branch"]["holding"]["n"].get<long>(),
+            600);
+  ASSERT_EQ(m["by_segment"].size(), 3u);
+  EXPECT_EQ(m["by_segment"][0]["part"], "estimation");
+  EXPECT_EQ(m["by_segment"][1]["part"], "mixed");
+  EXPECT_EQ(m["by_segment"][2]["part"], "heldout");
+  EXPECT_EQ(m["by_segment"][2]["segment"], "c");
+
+  in.estimation.resize(0);  // nothing held out
+  EXPECT_FALSE(compare_signals(in).contains("heldout"));
+}
+
+TEST(ComparisonSignals, BranchesFollowTheSignOfTheInputStep) {
+  ComparisonInput in;
+  in.t = times(9, 1.0);
+  in.u = vec({0, 1, 2, 3, 3, 3, 2, 1, 0});
+  in.y = vec({0, 0, 0, 0, 0, 0, 1, 1, 1});  // error only while unloading
+  in.y_model = Eigen::VectorXd::Zero(9);
+  const json b = compare_signals(in)["by_branch"];
+  EXPECT_EQ(b["loading"]["n"], 4);  // the first sample takes the branch of the second
+  EXPECT_EQ(b["holding"]["n"], 2);
+  EXPECT_EQ(b["unloading"]["n"], 3);
+  EXPECT_DOUBLE_EQ(b["unloading"]["rmse"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(b["loading"]["rmse"].get<double>(), 0.0);
+}
+
+// ---- correlation statistics -----------------------------------------------------
+
+TEST(ComparisonCorrelation, ChiSquaredSurvivalMatchesTables) {
+  // Upper critical values of chi-squared tables.
+  EXPECT_NEAR(chi_squared_survival(37.566, 20), 0.01, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(31.410, 20), 0.05, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(10.851, 20), 0.95, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(3.841, 1), 0.05, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(6.635, 1), 0.01, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(23.209, 10), 0.01, 2e-5);
+  EXPECT_NEAR(chi_squared_survival(124.342, 100), 0.05, 2e-5);
+  // Closed forms: chi2(2) survival exp(-x/2); P(1, x) = 1 - exp(-x); P(1/2, x) = erf(sqrt x).
+  for (double x : {0.1, 1.0, 5.0, 30.0, 80.0}) {
+    EXPECT_NEAR(chi_squared_survival(x, 2) / std::exp(-x / 2), 1.0, 1e-12) << x;
+    EXPECT_NEAR(gamma_p(1.0, x), 1.0 - std::exp(-x), 1e-14) << x;
+    EXPECT_NEAR(gamma_p(0.5, x), std::erf(std::sqrt(x)), 1e-14) << x;
+    EXPECT_NEAR(gamma_p(3.5, x) + gamma_q(3.5, x), 1.0, 1e-14) << x;
+  }
+  // Far tail: still positive and accurate relative to erfc.
+  EXPECT_NEAR(gamma_q(0.5, 50.0) / std::erfc(std::sqrt(50.0)), 1.0, 1e-10);
+  EXPECT_EQ(chi_squared_survival(0.0, 20), 1.0);
+}
+
+TEST(ComparisonCorrelation, CrossCorrelationPeaksAtTheDelay) {
+  const Eigen::Index n = 2000;
+  const Eigen::VectorXd u = gaussian(n, 1.0, 7);
+  for (int d : {7, -3, 0}) {
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (k - d >= 0 && k - d < n) e[k] = u[k - d];  // e(k) = u(k - d)
+    const Correlation c = cross_correlation(u, e, 25);
+    EXPECT_EQ(peak_lag(c), d);
+    EXPECT_GT(c.values[std::size_t(d + 25)], 0.95);
+    EXPECT_EQ(c.lags.front(), -25);
+    EXPECT_EQ(c.lags.back(), 25);
+  }
+}
+
+TEST(ComparisonCorrelation, WhiteResidualIsWhiteAndAutocorrelatedIsNot) {
+  ComparisonInput in = sine_case(3000, 0.001, 3.0);
+  const Eigen::VectorXd w = gaussian(3000, 0.05, 2026);
+  in.y = in.y_model + w;
+  const json white = compare_signals(in)["residual"];
+  EXPECT_TRUE(white["white"].get<bool>());
+  EXPECT_GT(white["ljung_box"]["p_value"].get<double>(), 0.01);
+  EXPECT_EQ(white["ljung_box"]["lags"], 20);
+  EXPECT_NEAR(white["acf"]["bound"].get<double>(), 2.58 / std::sqrt(3000.0), 1e-12);
+
+  Eigen::VectorXd ar = w;
+  for (Eigen::Index k = 1; k < ar.size(); ++k) ar[k] = 0.9 * ar[k - 1] + w[k];
+  in.y = in.y_model + ar;
+  const json coloured = compare_signals(in)["residual"];
+  EXPECT_FALSE(coloured["white"].get<bool>());
+  EXPECT_LT(coloured["ljung_box"]["p_value"].get<double>(), 1e-6);
+  EXPECT_NEAR(coloured["acf"]["values"][0].get<double>(), 0.9, 0.05);
+  EXPECT_EQ(coloured["acf"]["outside"], 25);
+}
+
+TEST(ComparisonCorrelation, LjungBoxUsesAtMostAFifthOfTheSamples) {
+  ComparisonInput in = sine_case(50, 0.01, 2.0);
+  in.y += gaussian(50, 0.1, 3);
+  EXPECT_EQ(compare_signals(in)["residual"]["ljung_box"]["lags"], 10);
+}
+
+// ---- noise floor ----------------------------------------------------------------
+
+TEST(ComparisonNoiseFloor, DifferenceEstimateOnSmoothSignalsIsWithinTenPercent) {
+  const Eigen::Index n = 5000;
+  const Eigen::VectorXd t = times(n, 0.001);
+  const std::vector<Eigen::VectorXd> signals = {
+      Eigen::VectorXd((10.0 * (2 * kPi * 2.0 * t.array()).sin()).matrix()),
+      Eigen::VectorXd((600.0 * (2 * kPi * 20.0 * t.array()).sin() + 50.0 * (2 * kPi * 3.0 * t.array()).cos()).matrix()),
+      Eigen::VectorXd((5.0 / (1.0 + (-(t.array() - 2.5) * 8.0).exp())).matrix()),  // smooth step
+  };
+  std::uint64_t seed = 100;
+  for (const auto& s : signals)
+    for (double sigma : {0.01, 0.3}) {
+      const Eigen::VectorXd y = s + gaussian(n, sigma, ++seed);
+      // A non-repeating input: u is the signal itself plus a ramp.
+      const Eigen::VectorXd u = s + t;
+      const NoiseFloor f = estimate_noise_floor(u, y, {});
+      EXPECT_EQ(f.method, "difference_mad");
+      EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10) << "sigma " << sigma << " seed " << seed;
+    }
+}
+
+TEST(ComparisonNoiseFloor, RepeatedPeriodsGiveThePeriodicEstimate) {
+  // 20 periods of 100 samples; y has sharp corners that differences cannot remove.
+  const Eigen::Index n = 2000, period = 100;
+  const Eigen::VectorXd t = times(n, 0.001);
+  Eigen::VectorXd u(n), clean(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    u[k] = std::sin(2 * kPi * double(k % period) / double(period));
+    clean[k] = u[k] > 0.3 ? 4.0 : -4.0;
+  }
+  const double sigma = 0.05;
+  const Eigen::VectorXd y = clean + gaussian(n, sigma, 77);
+  const NoiseFloor f = estimate_noise_floor(u, y, {});
+  EXPECT_EQ(f.method, "periodic");
+  EXPECT_EQ(f.period, period);
+  EXPECT_EQ(f.pairs, (20 - 1 - 10) * period);  // pairs from the second half of the periods
+  EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10);
+
+  // Two segments with different periods, each repeating inside its run.
+  std::vector<std::string> segment(std::size_t(n), "slow");
+  Eigen::VectorXd u2 = u;
+  for (Eigen::Index k = 1000; k < n; ++k) {
+    segment[std::size_t(k)] = "fast";
+    u2[k] = std::sin(2 * kPi * double(k % 40) / 40.0);
+  }
+  Eigen::VectorXd y2 = y;
+  for (Eigen::Index k = 1000; k < n; ++k) y2[k] += (u2[k] > 0.3 ? 4.0 : -4.0) - clean[k];
+  const NoiseFloor g = estimate_noise_floor(u2, y2, segment);
+  EXPECT_EQ(g.method, "periodic");
+  EXPECT_NEAR(g.sigma / sigma, 1.0, 0.10);
+}
+
+TEST(ComparisonNoiseFloor, ReportedWithTheRmseRatio) {
+  ComparisonInput in = sine_case(4000, 0.001, 2.0);
+  in.y += gaussian(4000, 0.2, 5);
+  const json f = compare_signals(in)["noise_floor"];
+  EXPECT_EQ(f["method"], "periodic");  // 2 Hz at 1 kHz repeats every 500 samples
+  EXPECT_NEAR(f["sigma"].get<double>() / 0.2, 1.0, 0.10);
+  EXPECT_NEAR(f["rmse_over_sigma"].get<double>(), 1.0, 0.10);  // a perfect model
+}
+
+// ---- signatures -------------------------------------------------------------------
+
+TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
+  const ComparisonInput base = [] {
+    ComparisonInput in = sine_case(4000, 0.001, 2.0);
+    in.y += gaussian(4000, 0.05, 99);
+    return in;
+  }();
+  const json clean = compare_signals(base)["signatures"];
+  EXPECT_LT(std::abs(clean["offset"].get<double>()), 0.2);
+  EXPECT_LT(std::abs(clean["drift"].get<double>()), 0.2);
+  EXPECT_LT(std::abs(clean["asymmetry"].get<double>()), 0.2);
+  EXPECT_LT(std::abs(clean["backlash"].get<double>()), 0.2);
+
+  const auto with = [&](auto effect) {
+    ComparisonInput in = base;
+    effect(in);
+    return compare_signals(in)["signatures"];
+  };
+  EXPECT_GT(with([](ComparisonInput& in) { in.y.array() += 0.3; })["offset"].get<double>(), 2.0);
+  EXPECT_GT(with([](ComparisonInput& in) { in.y += 0.5 * in.t; })["drift"].get<double>(), 0.8);
+  EXPECT_GT(with([](ComparisonInput& in) { in.y += 1e-4 * in.u.cwiseAbs2(); })["asymmetry"].get<double>(), 0.8);
+  EXPECT_GT(with([](ComparisonInput& in) {
+              for (Eigen::Index k = 1; k < in.y.size(); ++k) in.y[k] += in.u[k] > in.u[k - 1] ? 0.3 : -0.3;
+            })["backlash"].get<double>(), 0.8);
+  const json saturated = with([](ComparisonInput& in) {
+    in.y_model = 0.02 * in.u;
+    in.y = (2.0 * (0.01 * in.u.array()).tanh()).matrix();  // same slope at 0, saturates at ±2
+  });
+  EXPECT_GT(saturated["saturation"].get<double>(), 1.5);
+  EXPECT_GT(saturated["saturation_sse_share"].get<double>(), saturated["saturation_sample_share"].get<double>());
+
+  // A measured output 5 samples late: e ≈ −d·dŷ/dt with d = 5 ms.
+  const json delayed = with([](ComparisonInput& in) {
+    for (Eigen::Index k = 0; k < in.y.size(); ++k) in.y[k] = in.y_model[std::max<Eigen::Index>(0, k - 5)];
+  });
+  EXPECT_NEAR(delayed["delay_seconds"].get<double>(), 0.005, 0.001);
+  EXPECT_GT(delayed["delay_correlation"].get<double>(), 0.9);
+}
+
+// ---- report ------------------------------------------------------------------------
+
+bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(ComparisonReport, WritesMetricsReportAndFigures) {
+  TempDir tmp;
+  ComparisonInput in = sine_case(3000, 0.001, 2.0);
+  in.u_unit = "V";
+  in.y_unit = "µm";
+  in.y += gaussian(3000, 0.05, 8) + 1e-4 * in.u.cwiseAbs2();
+  in.segment.assign(3000, "sine_2Hz");
+  std::fill(in.segment.begin() + 1500, in.segment.end(), "sine|5Hz");
+  for (Eigen::Index k = 1500; k < 3000; ++k) in.u[k] = 100 * std::sin(2 * kPi * 5.0 * in.t[k]);
+  in.estimation = Eigen::VectorXd::Ones(3000);
+  in.estimation.tail(1000).setZero();
+  const json m = compare_signals(in);
+  const fs::path dir = tmp.path() / "compare";
+  const auto files = write_comparison(dir, in, m, "Synthetic test", "hysteresis,msd");
+  for (const auto& f : files) EXPECT_TRUE(fs::exists(f)) << f;
+
+  EXPECT_EQ(json::parse(read(dir / "metrics.json")), m);
+  const std::string report = read(dir / "report.md");
+  for (const char* part : {"# Synthetic test", "`hysteresis,msd`", "| held out |", "Noise floor",
+                           "Ljung–Box", "sine\\|5Hz", "| loading |", "asymmetry", "residual.svg"})
+    EXPECT_NE(report.find(part), std::string::npos) << part;
+  for (const char* name : {"fit_model_time", "fit_model_loops", "residual", "segment_rmse", "correlation"}) {
+    EXPECT_TRUE(fs::exists(dir / (std::string(name) + ".gp"))) << name;
+    if (gnuplot_installed()) {
+      EXPECT_GT(fs::file_size(dir / (std::string(name) + ".png")), 1000u) << name;
+    }
+  }
+  if (gnuplot_installed()) {
+    EXPECT_FALSE(fs::exists(dir / "gnuplot.log")) << read(dir / "gnuplot.log");
+    EXPECT_NE(report.find("![Residual over time"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace hystbench
