@@ -85,14 +85,14 @@ TEST(EffectAsymmetry, AddsQuadraticOfTheDrive) {
 }
 
 TEST(EffectSaturation, LimitsByTanhOfInverseLimit) {
-  // λ = 0.5: L = 2, y = 2·tanh(u/2).
-  const auto y = run("saturation", {1.0, 0.5}, {1.0, -2.0, 4.0});
+  // λ = 1/L² = 0.25: L = 2, y = 2·tanh(u/2).
+  const auto y = run("saturation", {1.0, 0.25}, {1.0, -2.0, 4.0});
   expect_values(y, {0.9242343145200195, -1.5231883119115297, 1.9280551601516338});
 }
 
 TEST(EffectSaturation, SaturatesTheStaticPartListedBeforeIt) {
   // u = 1: gain·v + d2·v² = 1.5, then 2·tanh(1.5/2).
-  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.5}, {1.0});
+  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.25}, {1.0});
   expect_values(y, {1.2702979047745746});
 }
 
@@ -345,7 +345,8 @@ TEST(EffectCatalog, PhysicalValuesRoundTrip) {
   EXPECT_DOUBLE_EQ(values["hysteresis.A"].get<double>(), value_of("hysteresis.A") * 3.5e-5 / 412.0);
   EXPECT_DOUBLE_EQ(values["asymmetry.d2"].get<double>(),
                    value_of("asymmetry.d2") * 3.5e-5 / (412.0 * 412.0));
-  EXPECT_DOUBLE_EQ(values["saturation.lambda"].get<double>(), value_of("saturation.lambda") / 3.5e-5);
+  EXPECT_DOUBLE_EQ(values["saturation.lambda"].get<double>(),
+                   value_of("saturation.lambda") / (3.5e-5 * 3.5e-5));
   EXPECT_DOUBLE_EQ(values["drift.c1"].get<double>(), value_of("drift.c1") * 3.5e-5);
   EXPECT_DOUBLE_EQ(values["msd.period"].get<double>(), value_of("msd.period"));
 }
@@ -359,7 +360,7 @@ TEST(EffectCatalog, UnitsReadAsPhysicalUnits) {
   EXPECT_EQ(units["hysteresis.beta"], "1/V");
   EXPECT_EQ(units["hysteresis.gamma"], "1/V");
   EXPECT_EQ(units["asymmetry.d2"], "µm/V^2");
-  EXPECT_EQ(units["saturation.lambda"], "1/µm");
+  EXPECT_EQ(units["saturation.lambda"], "1/µm^2");
   EXPECT_EQ(units["backlash.r"], "V");
   EXPECT_EQ(units["delay.d"], "samples");
   EXPECT_EQ(units["msd.period"], "s");
