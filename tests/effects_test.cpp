@@ -3,6 +3,7 @@
 // bounds, units, scale invariance, failure as false).
 #include <gtest/gtest.h>
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +15,7 @@
 #include "framework/model/effect.hpp"
 #include "framework/model/model.hpp"
 #include "framework/model/model_data.hpp"
+#include "problems/hammerstein/hammerstein_model.hpp"
 
 namespace hystbench {
 namespace {
@@ -212,6 +214,112 @@ TEST(EffectSecondMode, MixesWithTheFirstModeByParticipation) {
   ASSERT_TRUE(Model::parse("second_mode").simulate(params({1.3, 1.0, 2.2, 0.05}), d, second));
   ASSERT_TRUE(Model::parse("msd,second_mode").simulate(params({1.3, 0.03, 0.2, 0.3, 2.2, 0.05}), d, both));
   EXPECT_LT((both - (0.7 * first + 0.3 * second)).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(EffectChain, ReproducesTheSeedHammersteinModel) {
+  // The seed's 13 parameters map onto gain + hysteresis, asymmetry, msd, arx:
+  // the chain's blocks have unit static gain, so the seed's static gains
+  // 1/K (MSD) and (a + b)/(1 + c + d) (ARX) move into gain, A and d2.
+  const HammersteinParams s{0.4, 0.0015, 0.0005, 0.2, 0.15, 6e-5, 1.583e-5,
+                            0.001194, 1.0, 0.2, 0.09, -1.0, 0.29};
+  const double Ts = 1e-3;
+  const Measurement m = test_record(600.0);
+  const Eigen::VectorXd seed = simulate_hammerstein(s, m.u, Ts, BoucWenForm::Increment);
+  const double arx_gain = (s.a + s.b) / (1.0 + s.c + s.d);
+  const double g = arx_gain / s.K;
+  const double omega = std::sqrt(s.K / s.M), zeta = s.D / (2.0 * std::sqrt(s.K * s.M));
+  const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
+  const Eigen::VectorXd x = params({s.d1 * g, s.alpha * s.L * g, s.beta, s.gamma, s.d2 * g,
+                                    2.0 * M_PI / omega, zeta, s.c, s.d, s.a / arx_gain,
+                                    s.b / arx_gain});
+  ModelData d(m, SignalScales{});
+  Eigen::VectorXd y;
+  ASSERT_TRUE(model.simulate(x, d, y));
+  EXPECT_LT((y - seed).norm(), 1e-10 * seed.norm());
+}
+
+// Columns of the finite-difference Jacobian of the model output, each
+// normalised to unit length.
+Eigen::MatrixXd normalised_jacobian(const Model& model, const Eigen::VectorXd& x,
+                                    const ModelData& d) {
+  Eigen::MatrixXd J(d.size(), model.dimension());
+  for (int i = 0; i < model.dimension(); ++i) {
+    const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+    Eigen::VectorXd up = x, down = x, y_up, y_down;
+    up[i] += h;
+    down[i] -= h;
+    EXPECT_TRUE(model.simulate(up, d, y_up) && model.simulate(down, d, y_down));
+    J.col(i) = (y_up - y_down).normalized();
+  }
+  return J;
+}
+
+// A 30 s record at 200 Hz: a staircase (a level every 3 s) under a
+// 0.5-40 Hz sweep, so that slow and fast effects both show.
+Measurement staircase_record() {
+  Measurement m;
+  const int n = 6000;
+  m.sample_time = 5e-3;
+  m.t = Eigen::VectorXd::LinSpaced(n, 0.0, 5e-3 * (n - 1));
+  m.u.resize(n);
+  const double levels[] = {0.0, 1.0, 0.4, 1.6, -0.5, 0.8, 2.0, 0.2, 1.2, -0.2};
+  for (int k = 0; k < n; ++k) {
+    const double t = m.t[k];
+    m.u[k] = levels[int(t / 3.0) % 10] + 0.5 * std::sin(2 * M_PI * (0.5 + 0.65 * t) * t);
+  }
+  m.y = m.u;
+  return m;
+}
+
+TEST(EffectCatalog, NoFlatDirectionAgainstTheGainOrWithinTheChain) {
+  // Smallest singular value of the normalised Jacobian: 0 would mean a
+  // direction of parameters that leaves the output unchanged.
+  const ModelData d(staircase_record(), SignalScales{});
+  const std::vector<std::pair<std::string, Eigen::VectorXd>> cases = {
+      {"hysteresis", params({1.3, 0.6, 0.9, 0.3})},
+      {"asymmetry", params({1.3, 0.2})},
+      {"saturation", params({1.3, 0.3})},
+      {"backlash", params({1.3, 0.1})},
+      {"delay", params({1.3, 2.5})},
+      {"msd", params({1.3, 0.1, 0.2})},
+      {"arx", params({1.3, -1.2, 0.5, 0.2, 0.1})},
+      {"second_mode", params({1.3, 0.2, 1.3, 0.05})},
+      {"creep", params({1.3, 0.03})},
+      {"drift", params({1.3, 0.01})},
+      {"offset", params({1.3, 0.1})},
+      {"hysteresis,asymmetry,msd,arx",
+       params({1.3, 0.6, 0.9, 0.3, 0.2, 0.1, 0.2, -1.2, 0.5, 0.2, 0.1})},
+      {"delay,hysteresis,asymmetry,saturation,msd,second_mode,creep,drift,offset",
+       params({1.3, 2.5, 0.6, 0.9, 0.3, 0.2, 0.3, 0.1, 0.2, 0.2, 1.3, 0.05, 0.03, 0.01, 0.1})},
+  };
+  for (const auto& [name, x] : cases) {
+    SCOPED_TRACE(name);
+    const Model model = Model::parse(name);
+    ASSERT_EQ(model.dimension(), x.size());
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(normalised_jacobian(model, x, d));
+    const auto& sv = svd.singularValues();
+    EXPECT_GT(sv[sv.size() - 1], 1e-3) << "singular values " << sv.transpose();
+  }
+}
+
+TEST(EffectCreep, SeparatesFromTheGainOnAStaircase) {
+  // Simulated 30 s staircase with creep: a scan of gamma at the true gain
+  // has its minimum at the true value, and the gain column of the Jacobian
+  // is far from parallel to the creep column.
+  const ModelData d(staircase_record(), SignalScales{});
+  const Model model = Model::parse("creep");
+  Eigen::VectorXd truth;
+  ASSERT_TRUE(model.simulate(params({1.0, 0.04}), d, truth));
+  const Eigen::MatrixXd J = normalised_jacobian(model, params({1.0, 0.04}), d);
+  EXPECT_LT(std::abs(J.col(0).dot(J.col(1))), 0.99);
+  double best = 0.0, best_sse = std::numeric_limits<double>::infinity();
+  for (double gamma = 0.0; gamma <= 0.1; gamma += 0.005) {
+    Eigen::VectorXd y;
+    ASSERT_TRUE(model.simulate(params({1.0, gamma}), d, y));
+    const double sse = (y - truth).squaredNorm();
+    if (sse < best_sse) best_sse = sse, best = gamma;
+  }
+  EXPECT_NEAR(best, 0.04, 1e-9);
 }
 
 // ------------------------------------------------- registry-wide contracts
