@@ -504,6 +504,29 @@ TEST(EffectCatalog, UnstableParametersGiveFalseNotNan) {
   }
 }
 
+TEST(EffectCatalog, CatalogEffectsAreCausal) {
+  // Changing the input after sample k0 leaves every output up to k0 alone
+  // (the fractional delay must not peek at the next sample).
+  const Measurement m = test_record();
+  ModelData d(m, SignalScales{});
+  ModelData later = d;
+  const Eigen::Index k0 = 700;
+  later.u.tail(d.size() - k0 - 1).array() += 0.5;
+  for (const char* name : {"hysteresis", "asymmetry", "saturation", "backlash", "delay", "msd",
+                           "arx", "creep", "drift", "second_mode", "offset"}) {
+    SCOPED_TRACE(name);
+    const Model model = Model::parse(name);
+    for (double step : {0.03, 0.2}) {
+      const Eigen::VectorXd x = active_point(model, step);
+      Eigen::VectorXd y, y_later;
+      ASSERT_TRUE(model.simulate(x, d, y));
+      ASSERT_TRUE(model.simulate(x, later, y_later));
+      EXPECT_EQ(y.head(k0 + 1), y_later.head(k0 + 1)) << "step " << step;
+      EXPECT_NE(y.tail(d.size() - k0 - 1), y_later.tail(d.size() - k0 - 1)) << "step " << step;
+    }
+  }
+}
+
 TEST(EffectCatalog, SimulatesConcurrentlyWithTheSameResult) {
   // apply is const and keeps no state: several threads share one model.
   const Measurement m = test_record();
