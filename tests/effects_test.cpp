@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -63,8 +64,9 @@ Measurement test_record(double u_scale = 1.0, double y_scale = 1.0) {
   m.u.resize(n);
   for (int k = 0; k < n; ++k) {
     const double t = m.t[k];
-    m.u[k] = u_scale * (0.8 * std::sin(2 * M_PI * (3.0 + 20.0 * t) * t) + (t > 1.0 ? 0.5 : 0.0) +
-                        0.3 * std::sin(2 * M_PI * 47.0 * t));
+    const double chirp = 0.8 * std::sin(2 * std::numbers::pi * (3.0 + 20.0 * t) * t);
+    const double fast = 0.3 * std::sin(2 * std::numbers::pi * 47.0 * t);
+    m.u[k] = u_scale * (chirp + (t > 1.0 ? 0.5 : 0.0) + fast);
   }
   m.y = y_scale * m.u;
   return m;
@@ -129,7 +131,8 @@ TEST(EffectDelay, IsSmoothInTheDelay) {
   // Crossing an integer delay changes the output continuously and with a
   // continuous slope (no kink for the optimizer).
   std::vector<double> u(50);
-  for (std::size_t k = 0; k < u.size(); ++k) u[k] = std::sin(0.4 * double(k)) + 0.01 * double(k * k);
+  for (std::size_t k = 0; k < u.size(); ++k)
+    u[k] = std::sin(0.4 * double(k)) + 0.01 * double(k * k);
   const double h = 1e-5;
   for (double d : {1.0, 2.0}) {
     const auto below = run("delay", {1.0, d - h}, u), at = run("delay", {1.0, d}, u),
@@ -212,7 +215,8 @@ TEST(EffectSecondMode, MixesWithTheFirstModeByParticipation) {
   Eigen::VectorXd first, second, both;
   ASSERT_TRUE(Model::parse("msd").simulate(params({1.3, 0.03, 0.2}), d, first));
   ASSERT_TRUE(Model::parse("second_mode").simulate(params({1.3, 1.0, 2.2, 0.05}), d, second));
-  ASSERT_TRUE(Model::parse("msd,second_mode").simulate(params({1.3, 0.03, 0.2, 0.3, 2.2, 0.05}), d, both));
+  ASSERT_TRUE(Model::parse("msd,second_mode")
+                  .simulate(params({1.3, 0.03, 0.2, 0.3, 2.2, 0.05}), d, both));
   EXPECT_LT((both - (0.7 * first + 0.3 * second)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
@@ -230,7 +234,7 @@ TEST(EffectChain, ReproducesTheSeedHammersteinModel) {
   const double omega = std::sqrt(s.K / s.M), zeta = s.D / (2.0 * std::sqrt(s.K * s.M));
   const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
   const Eigen::VectorXd x = params({s.d1 * g, s.alpha * s.L * g, s.beta, s.gamma, s.d2 * g,
-                                    2.0 * M_PI / omega, zeta, s.c, s.d, s.a / arx_gain,
+                                    2.0 * std::numbers::pi / omega, zeta, s.c, s.d, s.a / arx_gain,
                                     s.b / arx_gain});
   ModelData d(m, SignalScales{});
   Eigen::VectorXd y;
@@ -265,7 +269,8 @@ Measurement staircase_record() {
   const double levels[] = {0.0, 1.0, 0.4, 1.6, -0.5, 0.8, 2.0, 0.2, 1.2, -0.2};
   for (int k = 0; k < n; ++k) {
     const double t = m.t[k];
-    m.u[k] = levels[int(t / 3.0) % 10] + 0.5 * std::sin(2 * M_PI * (0.5 + 0.65 * t) * t);
+    const double sweep = 0.5 * std::sin(2 * std::numbers::pi * (0.5 + 0.65 * t) * t);
+    m.u[k] = levels[int(t / 3.0) % 10] + sweep;
   }
   m.y = m.u;
   return m;
@@ -395,7 +400,8 @@ TEST(EffectCatalog, AddingANeutralEffectKeepsTheFittedOutputExactly) {
     Eigen::VectorXd y_base, y_ext;
     ASSERT_TRUE(base.simulate(x, d, y_base));
     ASSERT_TRUE(extended.simulate(x_ext, d, y_ext));
-    for (Eigen::Index k = 0; k < y_base.size(); ++k) ASSERT_EQ(y_ext[k], y_base[k]) << "sample " << k;
+    for (Eigen::Index k = 0; k < y_base.size(); ++k)
+      ASSERT_EQ(y_ext[k], y_base[k]) << "sample " << k;
   }
 }
 

@@ -5,8 +5,8 @@
 //
 // w is the stage input (the signal entering the dynamics stage); signal is
 // the output of the dynamics effects listed before this one (usually msd,
-// the first mode). The two modes share the static compliance: g is the
-// second mode's share of it (its participation), so the static gain stays
+// the first mode). The two modes share the static compliance: g (parameter
+// `participation`) is the second mode's share of it, so the static gain stays
 // the model's gain and g cannot be traded against it; above both resonances
 // the response rolls off as a modal sum does. For a cantilever the second
 // mode sits near 6.3 times the first.
