@@ -3,9 +3,11 @@
 // bounds, units, scale invariance, failure as false).
 #include <gtest/gtest.h>
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "framework/model/effect.hpp"
 #include "framework/model/model.hpp"
 #include "framework/model/model_data.hpp"
+#include "problems/hammerstein/hammerstein_model.hpp"
 
 namespace hystbench {
 namespace {
@@ -61,8 +64,9 @@ Measurement test_record(double u_scale = 1.0, double y_scale = 1.0) {
   m.u.resize(n);
   for (int k = 0; k < n; ++k) {
     const double t = m.t[k];
-    m.u[k] = u_scale * (0.8 * std::sin(2 * M_PI * (3.0 + 20.0 * t) * t) + (t > 1.0 ? 0.5 : 0.0) +
-                        0.3 * std::sin(2 * M_PI * 47.0 * t));
+    const double chirp = 0.8 * std::sin(2 * std::numbers::pi * (3.0 + 20.0 * t) * t);
+    const double fast = 0.3 * std::sin(2 * std::numbers::pi * 47.0 * t);
+    m.u[k] = u_scale * (chirp + (t > 1.0 ? 0.5 : 0.0) + fast);
   }
   m.y = y_scale * m.u;
   return m;
@@ -85,14 +89,14 @@ TEST(EffectAsymmetry, AddsQuadraticOfTheDrive) {
 }
 
 TEST(EffectSaturation, LimitsByTanhOfInverseLimit) {
-  // λ = 0.5: L = 2, y = 2·tanh(u/2).
-  const auto y = run("saturation", {1.0, 0.5}, {1.0, -2.0, 4.0});
+  // λ = 1/L² = 0.25: L = 2, y = 2·tanh(u/2).
+  const auto y = run("saturation", {1.0, 0.25}, {1.0, -2.0, 4.0});
   expect_values(y, {0.9242343145200195, -1.5231883119115297, 1.9280551601516338});
 }
 
 TEST(EffectSaturation, SaturatesTheStaticPartListedBeforeIt) {
   // u = 1: gain·v + d2·v² = 1.5, then 2·tanh(1.5/2).
-  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.5}, {1.0});
+  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.25}, {1.0});
   expect_values(y, {1.2702979047745746});
 }
 
@@ -127,7 +131,8 @@ TEST(EffectDelay, IsSmoothInTheDelay) {
   // Crossing an integer delay changes the output continuously and with a
   // continuous slope (no kink for the optimizer).
   std::vector<double> u(50);
-  for (std::size_t k = 0; k < u.size(); ++k) u[k] = std::sin(0.4 * double(k)) + 0.01 * double(k * k);
+  for (std::size_t k = 0; k < u.size(); ++k)
+    u[k] = std::sin(0.4 * double(k)) + 0.01 * double(k * k);
   const double h = 1e-5;
   for (double d : {1.0, 2.0}) {
     const auto below = run("delay", {1.0, d - h}, u), at = run("delay", {1.0, d}, u),
@@ -210,8 +215,116 @@ TEST(EffectSecondMode, MixesWithTheFirstModeByParticipation) {
   Eigen::VectorXd first, second, both;
   ASSERT_TRUE(Model::parse("msd").simulate(params({1.3, 0.03, 0.2}), d, first));
   ASSERT_TRUE(Model::parse("second_mode").simulate(params({1.3, 1.0, 2.2, 0.05}), d, second));
-  ASSERT_TRUE(Model::parse("msd,second_mode").simulate(params({1.3, 0.03, 0.2, 0.3, 2.2, 0.05}), d, both));
+  ASSERT_TRUE(Model::parse("msd,second_mode")
+                  .simulate(params({1.3, 0.03, 0.2, 0.3, 2.2, 0.05}), d, both));
   EXPECT_LT((both - (0.7 * first + 0.3 * second)).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(EffectChain, ReproducesTheSeedHammersteinModel) {
+  // The seed's 13 parameters map onto gain + hysteresis, asymmetry, msd, arx:
+  // the chain's blocks have unit static gain, so the seed's static gains
+  // 1/K (MSD) and (a + b)/(1 + c + d) (ARX) move into gain, A and d2.
+  const HammersteinParams s{0.4, 0.0015, 0.0005, 0.2, 0.15, 6e-5, 1.583e-5,
+                            0.001194, 1.0, 0.2, 0.09, -1.0, 0.29};
+  const double Ts = 1e-3;
+  const Measurement m = test_record(600.0);
+  const Eigen::VectorXd seed = simulate_hammerstein(s, m.u, Ts, BoucWenForm::Increment);
+  const double arx_gain = (s.a + s.b) / (1.0 + s.c + s.d);
+  const double g = arx_gain / s.K;
+  const double omega = std::sqrt(s.K / s.M), zeta = s.D / (2.0 * std::sqrt(s.K * s.M));
+  const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
+  const Eigen::VectorXd x = params({s.d1 * g, s.alpha * s.L * g, s.beta, s.gamma, s.d2 * g,
+                                    2.0 * std::numbers::pi / omega, zeta, s.c, s.d, s.a / arx_gain,
+                                    s.b / arx_gain});
+  ModelData d(m, SignalScales{});
+  Eigen::VectorXd y;
+  ASSERT_TRUE(model.simulate(x, d, y));
+  EXPECT_LT((y - seed).norm(), 1e-10 * seed.norm());
+}
+
+// Columns of the finite-difference Jacobian of the model output, each
+// normalised to unit length.
+Eigen::MatrixXd normalised_jacobian(const Model& model, const Eigen::VectorXd& x,
+                                    const ModelData& d) {
+  Eigen::MatrixXd J(d.size(), model.dimension());
+  for (int i = 0; i < model.dimension(); ++i) {
+    const double h = 1e-6 * std::max(1.0, std::abs(x[i]));
+    Eigen::VectorXd up = x, down = x, y_up, y_down;
+    up[i] += h;
+    down[i] -= h;
+    EXPECT_TRUE(model.simulate(up, d, y_up) && model.simulate(down, d, y_down));
+    J.col(i) = (y_up - y_down).normalized();
+  }
+  return J;
+}
+
+// A 30 s record at 200 Hz: a staircase (a level every 3 s) under a
+// 0.5-40 Hz sweep, so that slow and fast effects both show.
+Measurement staircase_record() {
+  Measurement m;
+  const int n = 6000;
+  m.sample_time = 5e-3;
+  m.t = Eigen::VectorXd::LinSpaced(n, 0.0, 5e-3 * (n - 1));
+  m.u.resize(n);
+  const double levels[] = {0.0, 1.0, 0.4, 1.6, -0.5, 0.8, 2.0, 0.2, 1.2, -0.2};
+  for (int k = 0; k < n; ++k) {
+    const double t = m.t[k];
+    const double sweep = 0.5 * std::sin(2 * std::numbers::pi * (0.5 + 0.65 * t) * t);
+    m.u[k] = levels[int(t / 3.0) % 10] + sweep;
+  }
+  m.y = m.u;
+  return m;
+}
+
+TEST(EffectCatalog, NoFlatDirectionAgainstTheGainOrWithinTheChain) {
+  // Smallest singular value of the normalised Jacobian: 0 would mean a
+  // direction of parameters that leaves the output unchanged.
+  const ModelData d(staircase_record(), SignalScales{});
+  const std::vector<std::pair<std::string, Eigen::VectorXd>> cases = {
+      {"hysteresis", params({1.3, 0.6, 0.9, 0.3})},
+      {"asymmetry", params({1.3, 0.2})},
+      {"saturation", params({1.3, 0.3})},
+      {"backlash", params({1.3, 0.1})},
+      {"delay", params({1.3, 2.5})},
+      {"msd", params({1.3, 0.1, 0.2})},
+      {"arx", params({1.3, -1.2, 0.5, 0.2, 0.1})},
+      {"second_mode", params({1.3, 0.2, 1.3, 0.05})},
+      {"creep", params({1.3, 0.03})},
+      {"drift", params({1.3, 0.01})},
+      {"offset", params({1.3, 0.1})},
+      {"hysteresis,asymmetry,msd,arx",
+       params({1.3, 0.6, 0.9, 0.3, 0.2, 0.1, 0.2, -1.2, 0.5, 0.2, 0.1})},
+      {"delay,hysteresis,asymmetry,saturation,msd,second_mode,creep,drift,offset",
+       params({1.3, 2.5, 0.6, 0.9, 0.3, 0.2, 0.3, 0.1, 0.2, 0.2, 1.3, 0.05, 0.03, 0.01, 0.1})},
+  };
+  for (const auto& [name, x] : cases) {
+    SCOPED_TRACE(name);
+    const Model model = Model::parse(name);
+    ASSERT_EQ(model.dimension(), x.size());
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(normalised_jacobian(model, x, d));
+    const auto& sv = svd.singularValues();
+    EXPECT_GT(sv[sv.size() - 1], 1e-3) << "singular values " << sv.transpose();
+  }
+}
+
+TEST(EffectCreep, SeparatesFromTheGainOnAStaircase) {
+  // Simulated 30 s staircase with creep: a scan of gamma at the true gain
+  // has its minimum at the true value, and the gain column of the Jacobian
+  // is far from parallel to the creep column.
+  const ModelData d(staircase_record(), SignalScales{});
+  const Model model = Model::parse("creep");
+  Eigen::VectorXd truth;
+  ASSERT_TRUE(model.simulate(params({1.0, 0.04}), d, truth));
+  const Eigen::MatrixXd J = normalised_jacobian(model, params({1.0, 0.04}), d);
+  EXPECT_LT(std::abs(J.col(0).dot(J.col(1))), 0.99);
+  double best = 0.0, best_sse = std::numeric_limits<double>::infinity();
+  for (double gamma = 0.0; gamma <= 0.1; gamma += 0.005) {
+    Eigen::VectorXd y;
+    ASSERT_TRUE(model.simulate(params({1.0, gamma}), d, y));
+    const double sse = (y - truth).squaredNorm();
+    if (sse < best_sse) best_sse = sse, best = gamma;
+  }
+  EXPECT_NEAR(best, 0.04, 1e-9);
 }
 
 // ------------------------------------------------- registry-wide contracts
@@ -287,7 +400,8 @@ TEST(EffectCatalog, AddingANeutralEffectKeepsTheFittedOutputExactly) {
     Eigen::VectorXd y_base, y_ext;
     ASSERT_TRUE(base.simulate(x, d, y_base));
     ASSERT_TRUE(extended.simulate(x_ext, d, y_ext));
-    for (Eigen::Index k = 0; k < y_base.size(); ++k) ASSERT_EQ(y_ext[k], y_base[k]) << "sample " << k;
+    for (Eigen::Index k = 0; k < y_base.size(); ++k)
+      ASSERT_EQ(y_ext[k], y_base[k]) << "sample " << k;
   }
 }
 
@@ -345,7 +459,8 @@ TEST(EffectCatalog, PhysicalValuesRoundTrip) {
   EXPECT_DOUBLE_EQ(values["hysteresis.A"].get<double>(), value_of("hysteresis.A") * 3.5e-5 / 412.0);
   EXPECT_DOUBLE_EQ(values["asymmetry.d2"].get<double>(),
                    value_of("asymmetry.d2") * 3.5e-5 / (412.0 * 412.0));
-  EXPECT_DOUBLE_EQ(values["saturation.lambda"].get<double>(), value_of("saturation.lambda") / 3.5e-5);
+  EXPECT_DOUBLE_EQ(values["saturation.lambda"].get<double>(),
+                   value_of("saturation.lambda") / (3.5e-5 * 3.5e-5));
   EXPECT_DOUBLE_EQ(values["drift.c1"].get<double>(), value_of("drift.c1") * 3.5e-5);
   EXPECT_DOUBLE_EQ(values["msd.period"].get<double>(), value_of("msd.period"));
 }
@@ -359,7 +474,7 @@ TEST(EffectCatalog, UnitsReadAsPhysicalUnits) {
   EXPECT_EQ(units["hysteresis.beta"], "1/V");
   EXPECT_EQ(units["hysteresis.gamma"], "1/V");
   EXPECT_EQ(units["asymmetry.d2"], "µm/V^2");
-  EXPECT_EQ(units["saturation.lambda"], "1/µm");
+  EXPECT_EQ(units["saturation.lambda"], "1/µm^2");
   EXPECT_EQ(units["backlash.r"], "V");
   EXPECT_EQ(units["delay.d"], "samples");
   EXPECT_EQ(units["msd.period"], "s");
@@ -392,6 +507,29 @@ TEST(EffectCatalog, UnstableParametersGiveFalseNotNan) {
     SCOPED_TRACE(model);
     Eigen::VectorXd y;
     EXPECT_FALSE(Model::parse(model).simulate(x, d, y));
+  }
+}
+
+TEST(EffectCatalog, CatalogEffectsAreCausal) {
+  // Changing the input after sample k0 leaves every output up to k0 alone
+  // (the fractional delay must not peek at the next sample).
+  const Measurement m = test_record();
+  ModelData d(m, SignalScales{});
+  ModelData later = d;
+  const Eigen::Index k0 = 700;
+  later.u.tail(d.size() - k0 - 1).array() += 0.5;
+  for (const char* name : {"hysteresis", "asymmetry", "saturation", "backlash", "delay", "msd",
+                           "arx", "creep", "drift", "second_mode", "offset"}) {
+    SCOPED_TRACE(name);
+    const Model model = Model::parse(name);
+    for (double step : {0.03, 0.2}) {
+      const Eigen::VectorXd x = active_point(model, step);
+      Eigen::VectorXd y, y_later;
+      ASSERT_TRUE(model.simulate(x, d, y));
+      ASSERT_TRUE(model.simulate(x, later, y_later));
+      EXPECT_EQ(y.head(k0 + 1), y_later.head(k0 + 1)) << "step " << step;
+      EXPECT_NE(y.tail(d.size() - k0 - 1), y_later.tail(d.size() - k0 - 1)) << "step " << step;
+    }
   }
 }
 

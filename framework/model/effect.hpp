@@ -54,9 +54,10 @@ struct EffectParam {
 struct SignalContext {
   double sample_time = 0.0;                     // s
   const Eigen::VectorXd* time = nullptr;        // s, starting at 0
-  // The signal as it entered this effect's stage: v (normalised input after
-  // the input stage) for nonlinearity effects, w (the nonlinearity's output)
-  // for dynamics and output effects, u for input effects. Lets parallel
+  // The signal as it entered this effect's stage: u for input effects, v
+  // (normalised input after the input stage, before the gain) for
+  // nonlinearity effects, w (the nonlinearity's output) for dynamics
+  // effects, and the dynamics' output for output effects. Lets parallel
   // branches (a second vibration mode, a hysteresis term) see the stage input.
   const Eigen::VectorXd* stage_input = nullptr;
   // Internal integration sub-steps per sample for effects that integrate an

@@ -10,6 +10,11 @@
 // the two. Unlike the seed form, all parameters 0 is an exact pass-through
 // (b0 = 1), which is the neutral value. Poles outside the Jury triangle
 // |a2| < 1, |a1| < 1 + a2 make apply false.
+// At the neutral value itself the poles cancel the zeros (both at z = 0),
+// so there a1 and b1 (and a2 and b2) first move the output along the same
+// direction, 1 − z⁻¹ (and 1 − z⁻²); any second-order family through the
+// pass-through has this, and it disappears as soon as the block does
+// something. Away from neutral no direction is flat.
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -25,7 +30,8 @@ class Arx : public Effect {
     i.summary =
         "second-order discrete transfer function (b0 + b1 z⁻¹ + b2 z⁻²)/(1 + a1 z⁻¹ + a2 z⁻²), "
         "b0 fixed by unit static gain";
-    i.citation = "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (DESIGN.md §3)";
+    i.citation =
+        "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (DESIGN.md §3)";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"a1", -2.0, 2.0, 0.0, 0, 0, "", "first denominator coefficient"},

@@ -12,6 +12,7 @@ class Offset : public Effect {
     i.summary = "constant sensor offset added to the output";
     i.stage = EffectStage::Output;
     i.params = {{"c0", -5.0, 5.0, 0.0, 1, 0, "", "offset"}};
+    i.citation = "DISCOVERY.md §2 (sensor offset and drift y + c0 + c1·t)";
     i.signature = "the residual has a non-zero mean that does not depend on the input";
     return i;
   }

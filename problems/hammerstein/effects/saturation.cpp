@@ -1,14 +1,16 @@
 // Smooth saturation of the static part (nonlinearity stage).
 //
-//   signal[k] = L·tanh(signal[k] / L),   L = 1/lambda
+//   signal[k] = L·tanh(signal[k] / L),   lambda = 1/L²
 //
 // It limits the nonlinearity stage's signal as it stands when the effect
 // runs: gain·v plus the nonlinearity effects listed before it (list it last
 // in that stage to saturate the whole static part). Parameterised by the
-// inverse limit lambda = 1/L ≥ 0 so that lambda = 0 (L → ∞) is an exact
-// pass-through and the output is smooth in lambda: tanh(λs)/λ → s as λ → 0.
-// A negative lambda would give the same curve as |lambda| (a second, mirror
-// optimum), so it is rejected. Units: lambda in 1/y.
+// inverse squared limit lambda = 1/L² ≥ 0 so that lambda = 0 (L → ∞) is an
+// exact pass-through inside the box, and so that the output moves linearly
+// away from it: L·tanh(s/L) = s − lambda·s³/3 + O(lambda²). With 1/L as the
+// parameter the first derivative at the neutral value would be zero, and a
+// local search or a score test started there would not see the effect.
+// Units: lambda in 1/y².
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -21,13 +23,13 @@ class Saturation : public Effect {
   static EffectInfo info() {
     EffectInfo i;
     i.name = "saturation";
-    i.summary = "smooth limit L·tanh(s/L) on the static part's output, parameterised by 1/L";
+    i.summary = "smooth limit L·tanh(s/L) on the static part's output, parameterised by 1/L²";
     i.citation =
         "Hassani, Tjahjowidodo & Do, Mech. Syst. Signal Process. 49 (2014) (survey); "
         "MATLAB nlhw saturation block";
     i.stage = EffectStage::Nonlinearity;
-    i.params = {{"lambda", 0.0, 2.0, 0.0, -1, 0, "",
-                 "inverse output limit 1/L (0 = no saturation)"}};
+    i.params = {{"lambda", 0.0, 4.0, 0.0, -2, 0, "",
+                 "inverse squared output limit 1/L² (0 = no saturation)"}};
     i.signature =
         "the error is concentrated in the top amplitude bin and the residual carries a third "
         "harmonic of the drive";
@@ -39,9 +41,9 @@ class Saturation : public Effect {
     const double lambda = p[0];
     if (!std::isfinite(lambda) || lambda < 0.0) return false;
     if (lambda == 0.0) return true;
-    const double limit = 1.0 / lambda;
+    const double inverse_limit = std::sqrt(lambda), limit = 1.0 / inverse_limit;
     if (!std::isfinite(limit)) return false;
-    signal.array() = limit * (lambda * signal.array()).tanh();
+    signal.array() = limit * (inverse_limit * signal.array()).tanh();
     return true;
   }
 };

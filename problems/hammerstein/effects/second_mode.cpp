@@ -5,8 +5,8 @@
 //
 // w is the stage input (the signal entering the dynamics stage); signal is
 // the output of the dynamics effects listed before this one (usually msd,
-// the first mode). The two modes share the static compliance: g is the
-// second mode's share of it (its participation), so the static gain stays
+// the first mode). The two modes share the static compliance: g (parameter
+// `participation`) is the second mode's share of it, so the static gain stays
 // the model's gain and g cannot be traded against it; above both resonances
 // the response rolls off as a modal sum does. For a cantilever the second
 // mode sits near 6.3 times the first.
@@ -35,7 +35,8 @@ class SecondMode : public Effect {
         "ω₂/ω₁ ≈ 6.27); DISCOVERY.md §2";
     i.stage = EffectStage::Dynamics;
     i.params = {
-        {"g", -1.0, 1.0, 0.0, 0, 0, "", "participation: share of the static gain in the second mode"},
+        {"participation", -1.0, 1.0, 0.0, 0, 0, "",
+         "g: share of the static gain carried by the second mode"},
         {"log10_f", 0.0, 4.5, 2.5, 0, 0, "log10(Hz)", "log10 of the second natural frequency"},
         {"zeta", 0.005, 1.0, 0.05, 0, 0, "", "damping ratio of the second mode"},
     };
