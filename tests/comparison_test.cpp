@@ -134,6 +134,8 @@ TEST(ComparisonSignals, DegenerateInputsGiveNaNFreeJson) {
     EXPECT_EQ(json::parse(m.dump()), m);
     EXPECT_TRUE(m["signatures"].is_object());
   }
+  // A diverged model is never called white.
+  EXPECT_FALSE(compare_signals(diverged)["residual"]["white"].get<bool>());
 }
 
 TEST(ComparisonSignals, RejectsMismatchedLengths) {
@@ -353,7 +355,26 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
   EXPECT_GT(delayed["delay_correlation"].get<double>(), 0.9);
 }
 
-// ---- report ------------------------------------------------------------------------
+// ---- report ----
+
+TEST(ComparisonReport, VerdictsFollowTheNumbers) {
+  ComparisonInput in = sine_case(3000, 0.001, 2.0);
+  in.y += gaussian(3000, 0.05, 21);
+  const json good = compare_signals(in);
+  const std::string white = comparison_markdown(in, good, "t", "m", false, "");
+  EXPECT_NE(white.find("the residual is white"), std::string::npos);
+  EXPECT_NE(white.find("at the noise floor"), std::string::npos);
+  EXPECT_EQ(white.find("!["), std::string::npos);  // no images to embed
+
+  in.y += 0.3 * in.u.cwiseAbs2() / 100.0;  // a large missing even term
+  const json bad = compare_signals(in);
+  const std::string coloured = comparison_markdown(in, bad, "t", "m", true, "");
+  EXPECT_NE(coloured.find("**not white**"), std::string::npos);
+  EXPECT_NE(coloured.find("well above the noise floor"), std::string::npos);
+  EXPECT_NE(coloured.find("![Residual over time"), std::string::npos);
+}
+
+// ---- report writing ------------------------------------------------------------------------
 
 bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 

@@ -46,7 +46,7 @@ nlohmann::json correlation_json(const Correlation& c) {
           {"outside", c.outside}};
 }
 
-nlohmann::json residual_json(const Eigen::VectorXd& e, const Correlation& acf,
+nlohmann::json residual_json(const Eigen::VectorXd& u, const Eigen::VectorXd& e, const Correlation& acf,
                              const Correlation& ccf) {
   const LjungBox lb = ljung_box(e, kLjungBoxLags);
   const auto n = e.size();
@@ -54,6 +54,9 @@ nlohmann::json residual_json(const Eigen::VectorXd& e, const Correlation& acf,
   const double std = n >= 2 ? std::sqrt((e.array() - mean).square().sum() / double(n - 1)) : NAN;
   nlohmann::json ccf_json = correlation_json(ccf);
   ccf_json["peak_lag"] = peak_lag(ccf);
+  // A smooth (narrow-band) input spreads r_ue over many lags; readers need
+  // to know before taking the peak lag for a delay.
+  ccf_json["input_lag1_autocorrelation"] = finite_or_null(autocorrelation(u, 1).values[0]);
   return {{"computed_on", "whole record"},
           {"mean", finite_or_null(mean)},
           {"std", finite_or_null(std)},
@@ -109,7 +112,7 @@ nlohmann::json compare_signals(const ComparisonInput& in) {
   const Eigen::VectorXd e = in.y - in.y_model;
   const Correlation acf = autocorrelation(e, kCorrelationLags);
   const Correlation ccf = cross_correlation(in.u, e, kCorrelationLags);
-  out["residual"] = residual_json(e, acf, ccf);
+  out["residual"] = residual_json(in.u, e, acf, ccf);
   out["noise_floor"] = noise_json(estimate_noise_floor(in.u, in.y, in.segment), out["all"],
                                   out.contains("heldout") ? out["heldout"] : nlohmann::json());
   out["signatures"] = residual_signatures({in.t, in.u, in.y_model, e, in.segment, ts, ccf});

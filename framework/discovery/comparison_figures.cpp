@@ -159,9 +159,11 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const nl
       "set ylabel rmse_label\nset yrange [0:*]\n"
       "set xrange [-0.6:" + gp::number(double(bars) - 0.4) + "]\n"
       "set style fill solid 0.85 border rgb \"#404040\"\nset boxwidth 0.7\n"
-      "set xtics nomirror noenhanced" + (bars > 6 ? " rotate by -35 left" : "") + "\n"
+      "# Many segments: names upright, ending at their bar, so none leaves the page.\n"
+      "set xtics nomirror noenhanced" + (bars > 6 ? " rotate by 90 right" : "") + "\n"
       "set grid ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-      "set key top left opaque samplen 2\nset offsets 0, 0, graph 0.12, 0\n" +
+      "set title offset 0, 1.2\nset tmargin 4\n"
+      "set key at graph 0, graph 1.01 left bottom horizontal samplen 2\n" +
       gp::render_all_terminals("segment_rmse", body);
   return gp::write_script(dir, "segment_rmse", script);
 }

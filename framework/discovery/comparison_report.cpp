@@ -18,6 +18,10 @@ using nlohmann::json;
 constexpr double kAtNoiseFloor = 1.1;
 constexpr double kNearNoiseFloor = 2.0;
 constexpr std::size_t kWorstSegments = 10;
+// r_uu(1) above this: the input is too smooth for the CCF peak lag to mean a delay.
+constexpr double kSmoothInput = 0.9;
+// corr(e, −dŷ/dt) above this is reported as a delay.
+constexpr double kDelayCorrelation = 0.5;
 
 std::string num(const json& j) {
   if (j.is_number_integer()) return std::to_string(j.get<long long>());
@@ -152,8 +156,14 @@ std::string correlation_verdict(const json& m, double ts) {
          std::to_string(c["lags"].size()) + " lags lie outside the 99 % band ±" + num(c["bound"]) +
          " (about " + num(0.01 * double(c["lags"].size())) + " expected by chance); the largest is r = " +
          num(peak) + " at τ = " + std::to_string(lag) + ". ";
+  const double smooth = value(c["input_lag1_autocorrelation"]);
+  const bool narrow_band = smooth > kSmoothInput;
   if (outside <= 1)
     out += "The residual is independent of the input within the band.\n";
+  else if (narrow_band)
+    out += "The residual depends on the input, but the input is smooth (r_uu(1) = " + num(smooth) +
+           "), so the correlation spreads over many lags and the lag of its peak is no delay "
+           "estimate.\n";
   else if (lag > 0 && single_peak(c, lag))
     out += "The residual follows the input " + std::to_string(lag) + " samples earlier, with one "
            "sharp peak: a time delay of about " + num(lag * ts) + " s is missing.\n";
@@ -162,8 +172,13 @@ std::string correlation_verdict(const json& m, double ts) {
   else if (lag == 0)
     out += "The residual follows the present input: the static part (gain, asymmetry, saturation) is off.\n";
   else
-    out += "The residual correlates with future input: feedback in the data, or a model that "
+    out += "The residual correlates most with future input: feedback in the data, or a model that "
            "reacts too early.\n";
+  const json& sig = m["signatures"];
+  if (value(sig["delay_correlation"]) > kDelayCorrelation && value(sig["delay_seconds"]) > 0)
+    out += "- **Delay**: the residual follows −dŷ/dt (r = " + num(sig["delay_correlation"]) +
+           "), as a measured output lagging the model by about " + num(sig["delay_seconds"]) +
+           " s would make it.\n";
   return out + "\n";
 }
 

@@ -106,6 +106,10 @@ LjungBox ljung_box(const Eigen::VectorXd& e, int max_lags) {
   LjungBox lb;
   const Eigen::Index n = e.size();
   lb.lags = std::max(1, int(std::min<Eigen::Index>(max_lags, n / 5)));
+  if (!e.allFinite()) {  // a diverged model: nothing can be said, least of all "white"
+    lb.q = lb.p_value = std::numeric_limits<double>::quiet_NaN();
+    return lb;
+  }
   if (n < 2) return lb;
   const Correlation r = autocorrelation(e, lb.lags);
   double sum = 0;
