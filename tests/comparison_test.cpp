@@ -1,3 +1,5 @@
+#include "framework/discovery/comparison.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <sstream>
 
 #include "framework/core/rng.hpp"
-#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/noise_floor.hpp"
@@ -48,9 +49,11 @@ void expect_all_finite(const json& j, const std::string& where = "") {
   if (j.is_number_float()) {
     EXPECT_TRUE(std::isfinite(j.get<double>())) << "non-finite number at " << where;
   } else if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it) expect_all_finite(it.value(), where + "/" + it.key());
+    for (auto it = j.begin(); it != j.end(); ++it)
+      expect_all_finite(it.value(), where + "/" + it.key());
   } else if (j.is_array()) {
-    for (std::size_t i = 0; i < j.size(); ++i) expect_all_finite(j[i], where + "/" + std::to_string(i));
+    for (std::size_t i = 0; i < j.size(); ++i)
+      expect_all_finite(j[i], where + "/" + std::to_string(i));
   }
 }
 
@@ -162,7 +165,8 @@ TEST(ComparisonSignals, PartsAndBreakdownsCoverEverySample) {
   EXPECT_EQ(sum_n(m["by_amplitude"]), 600);
   EXPECT_EQ(sum_n(m["by_time"]), 600);
   EXPECT_EQ(m["by_time"].size(), 10u);
-  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() + m["by_branch"]["unloading"]["n"].get<long>() +
+  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() +
+                m["by_branch"]["unloading"]["n"].get<long>() +
                 m["by_branch"]["holding"]["n"].get<long>(),
             600);
   ASSERT_EQ(m["by_segment"].size(), 3u);
@@ -260,7 +264,9 @@ TEST(ComparisonNoiseFloor, DifferenceEstimateOnSmoothSignalsIsWithinTenPercent) 
   const Eigen::VectorXd t = times(n, 0.001);
   const std::vector<Eigen::VectorXd> signals = {
       Eigen::VectorXd((10.0 * (2 * kPi * 2.0 * t.array()).sin()).matrix()),
-      Eigen::VectorXd((600.0 * (2 * kPi * 20.0 * t.array()).sin() + 50.0 * (2 * kPi * 3.0 * t.array()).cos()).matrix()),
+      Eigen::VectorXd(
+          (600.0 * (2 * kPi * 20.0 * t.array()).sin() + 50.0 * (2 * kPi * 3.0 * t.array()).cos())
+              .matrix()),
       Eigen::VectorXd((5.0 / (1.0 + (-(t.array() - 2.5) * 8.0).exp())).matrix()),  // smooth step
   };
   std::uint64_t seed = 100;
@@ -336,20 +342,27 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
   };
   EXPECT_GT(with([](ComparisonInput& in) { in.y.array() += 0.3; })["offset"].get<double>(), 2.0);
   EXPECT_GT(with([](ComparisonInput& in) { in.y += 0.5 * in.t; })["drift"].get<double>(), 0.8);
-  EXPECT_GT(with([](ComparisonInput& in) { in.y += 1e-4 * in.u.cwiseAbs2(); })["asymmetry"].get<double>(), 0.8);
+  EXPECT_GT(
+      with([](ComparisonInput& in) { in.y += 1e-4 * in.u.cwiseAbs2(); })["asymmetry"].get<double>(),
+      0.8);
   EXPECT_GT(with([](ComparisonInput& in) {
-              for (Eigen::Index k = 1; k < in.y.size(); ++k) in.y[k] += in.u[k] > in.u[k - 1] ? 0.3 : -0.3;
-            })["backlash"].get<double>(), 0.8);
+              for (Eigen::Index k = 1; k < in.y.size(); ++k)
+                in.y[k] += in.u[k] > in.u[k - 1] ? 0.3 : -0.3;
+            })["backlash"]
+                .get<double>(),
+            0.8);
   const json saturated = with([](ComparisonInput& in) {
     in.y_model = 0.02 * in.u;
     in.y = (2.0 * (0.01 * in.u.array()).tanh()).matrix();  // same slope at 0, saturates at ±2
   });
   EXPECT_GT(saturated["saturation"].get<double>(), 1.5);
-  EXPECT_GT(saturated["saturation_sse_share"].get<double>(), saturated["saturation_sample_share"].get<double>());
+  EXPECT_GT(saturated["saturation_sse_share"].get<double>(),
+            saturated["saturation_sample_share"].get<double>());
 
   // A measured output 5 samples late: e ≈ −d·dŷ/dt with d = 5 ms.
   const json delayed = with([](ComparisonInput& in) {
-    for (Eigen::Index k = 0; k < in.y.size(); ++k) in.y[k] = in.y_model[std::max<Eigen::Index>(0, k - 5)];
+    for (Eigen::Index k = 0; k < in.y.size(); ++k)
+      in.y[k] = in.y_model[std::max<Eigen::Index>(0, k - 5)];
   });
   EXPECT_NEAR(delayed["delay_seconds"].get<double>(), 0.005, 0.001);
   EXPECT_GT(delayed["delay_correlation"].get<double>(), 0.9);
@@ -406,7 +419,8 @@ TEST(ComparisonReport, WritesMetricsReportAndFigures) {
   for (const char* part : {"# Synthetic test", "`hysteresis,msd`", "| held out |", "Noise floor",
                            "Ljung–Box", "sine\\|5Hz", "| loading |", "asymmetry", "residual.svg"})
     EXPECT_NE(report.find(part), std::string::npos) << part;
-  for (const char* name : {"fit_model_time", "fit_model_loops", "residual", "segment_rmse", "correlation"}) {
+  for (const char* name :
+       {"fit_model_time", "fit_model_loops", "residual", "segment_rmse", "correlation"}) {
     EXPECT_TRUE(fs::exists(dir / (std::string(name) + ".gp"))) << name;
     if (gnuplot_installed()) {
       EXPECT_GT(fs::file_size(dir / (std::string(name) + ".png")), 1000u) << name;

@@ -12,9 +12,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // 99 % two-sided quantile of the standard normal distribution.
 constexpr double kBand99 = 2.58;
 
-Eigen::VectorXd centred(const Eigen::VectorXd& v) {
-  return (v.array() - v.mean()).matrix();
-}
+Eigen::VectorXd centred(const Eigen::VectorXd& v) { return (v.array() - v.mean()).matrix(); }
 
 double band(Eigen::Index n) { return n > 0 ? kBand99 / std::sqrt(double(n)) : kNaN; }
 
