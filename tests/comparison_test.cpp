@@ -312,6 +312,28 @@ TEST(ComparisonNoiseFloor, RepeatedPeriodsGiveThePeriodicEstimate) {
   EXPECT_NEAR(g.sigma / sigma, 1.0, 0.10);
 }
 
+TEST(ComparisonNoiseFloor, RepeatedSegmentLabelsCountAsPeriods) {
+  // Segments "ramp" and "chirp" alternate three times each; the measured input
+  // carries a little noise, so it never repeats exactly, but the labels do.
+  const Eigen::Index run = 300, n = 6 * run;
+  Eigen::VectorXd u(n), clean(n);
+  std::vector<std::string> segment;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = k % run;
+    const bool ramp = (k / run) % 2 == 0;
+    segment.push_back(ramp ? "ramp" : "chirp");
+    u[k] = ramp ? double(i) / run : std::sin(0.0002 * double(i * i));
+    clean[k] = u[k] > 0.5 ? 3.0 : -1.0;  // corners that differences cannot remove
+  }
+  u += gaussian(n, 1e-5, 41);
+  const double sigma = 0.05;
+  const NoiseFloor f = estimate_noise_floor(u, clean + gaussian(n, sigma, 42), segment);
+  EXPECT_EQ(f.method, "periodic");
+  EXPECT_EQ(f.period, 0);       // not from an exact period of u
+  EXPECT_EQ(f.pairs, 2 * run);  // per label: occurrences 2 and 3
+  EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10);
+}
+
 TEST(ComparisonNoiseFloor, ReportedWithTheRmseRatio) {
   ComparisonInput in = sine_case(4000, 0.001, 2.0);
   in.y += gaussian(4000, 0.2, 5);
