@@ -1,3 +1,5 @@
+#include "framework/discovery/comparison.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <sstream>
 
 #include "framework/core/rng.hpp"
-#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/noise_floor.hpp"
@@ -48,9 +49,11 @@ void expect_all_finite(const json& j, const std::string& where = "") {
   if (j.is_number_float()) {
     EXPECT_TRUE(std::isfinite(j.get<double>())) << "non-finite number at " << where;
   } else if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it) expect_all_finite(it.value(), where + "/" + it.key());
+    for (auto it = j.begin(); it != j.end(); ++it)
+      expect_all_finite(it.value(), where + "/" + it.key());
   } else if (j.is_array()) {
-    for (std::size_t i = 0; i < j.size(); ++i) expect_all_finite(j[i], where + "/" + std::to_string(i));
+    for (std::size_t i = 0; i < j.size(); ++i)
+      expect_all_finite(j[i], where + "/" + std::to_string(i));
   }
 }
 
@@ -134,6 +137,8 @@ TEST(ComparisonSignals, DegenerateInputsGiveNaNFreeJson) {
     EXPECT_EQ(json::parse(m.dump()), m);
     EXPECT_TRUE(m["signatures"].is_object());
   }
+  // A diverged model is never called white.
+  EXPECT_FALSE(compare_signals(diverged)["residual"]["white"].get<bool>());
 }
 
 TEST(ComparisonSignals, RejectsMismatchedLengths) {
@@ -160,7 +165,8 @@ TEST(ComparisonSignals, PartsAndBreakdownsCoverEverySample) {
   EXPECT_EQ(sum_n(m["by_amplitude"]), 600);
   EXPECT_EQ(sum_n(m["by_time"]), 600);
   EXPECT_EQ(m["by_time"].size(), 10u);
-  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() + m["by_branch"]["unloading"]["n"].get<long>() +
+  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() +
+                m["by_branch"]["unloading"]["n"].get<long>() +
                 m["by_branch"]["holding"]["n"].get<long>(),
             600);
   ASSERT_EQ(m["by_segment"].size(), 3u);
@@ -258,7 +264,9 @@ TEST(ComparisonNoiseFloor, DifferenceEstimateOnSmoothSignalsIsWithinTenPercent) 
   const Eigen::VectorXd t = times(n, 0.001);
   const std::vector<Eigen::VectorXd> signals = {
       Eigen::VectorXd((10.0 * (2 * kPi * 2.0 * t.array()).sin()).matrix()),
-      Eigen::VectorXd((600.0 * (2 * kPi * 20.0 * t.array()).sin() + 50.0 * (2 * kPi * 3.0 * t.array()).cos()).matrix()),
+      Eigen::VectorXd(
+          (600.0 * (2 * kPi * 20.0 * t.array()).sin() + 50.0 * (2 * kPi * 3.0 * t.array()).cos())
+              .matrix()),
       Eigen::VectorXd((5.0 / (1.0 + (-(t.array() - 2.5) * 8.0).exp())).matrix()),  // smooth step
   };
   std::uint64_t seed = 100;
@@ -304,6 +312,28 @@ TEST(ComparisonNoiseFloor, RepeatedPeriodsGiveThePeriodicEstimate) {
   EXPECT_NEAR(g.sigma / sigma, 1.0, 0.10);
 }
 
+TEST(ComparisonNoiseFloor, RepeatedSegmentLabelsCountAsPeriods) {
+  // Segments "ramp" and "chirp" alternate three times each; the measured input
+  // carries a little noise, so it never repeats exactly, but the labels do.
+  const Eigen::Index run = 300, n = 6 * run;
+  Eigen::VectorXd u(n), clean(n);
+  std::vector<std::string> segment;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index i = k % run;
+    const bool ramp = (k / run) % 2 == 0;
+    segment.push_back(ramp ? "ramp" : "chirp");
+    u[k] = ramp ? double(i) / run : std::sin(0.0002 * double(i * i));
+    clean[k] = u[k] > 0.5 ? 3.0 : -1.0;  // corners that differences cannot remove
+  }
+  u += gaussian(n, 1e-5, 41);
+  const double sigma = 0.05;
+  const NoiseFloor f = estimate_noise_floor(u, clean + gaussian(n, sigma, 42), segment);
+  EXPECT_EQ(f.method, "periodic");
+  EXPECT_EQ(f.period, 0);       // not from an exact period of u
+  EXPECT_EQ(f.pairs, 2 * run);  // per label: occurrences 2 and 3
+  EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10);
+}
+
 TEST(ComparisonNoiseFloor, ReportedWithTheRmseRatio) {
   ComparisonInput in = sine_case(4000, 0.001, 2.0);
   in.y += gaussian(4000, 0.2, 5);
@@ -334,26 +364,52 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
   };
   EXPECT_GT(with([](ComparisonInput& in) { in.y.array() += 0.3; })["offset"].get<double>(), 2.0);
   EXPECT_GT(with([](ComparisonInput& in) { in.y += 0.5 * in.t; })["drift"].get<double>(), 0.8);
-  EXPECT_GT(with([](ComparisonInput& in) { in.y += 1e-4 * in.u.cwiseAbs2(); })["asymmetry"].get<double>(), 0.8);
+  EXPECT_GT(
+      with([](ComparisonInput& in) { in.y += 1e-4 * in.u.cwiseAbs2(); })["asymmetry"].get<double>(),
+      0.8);
   EXPECT_GT(with([](ComparisonInput& in) {
-              for (Eigen::Index k = 1; k < in.y.size(); ++k) in.y[k] += in.u[k] > in.u[k - 1] ? 0.3 : -0.3;
-            })["backlash"].get<double>(), 0.8);
+              for (Eigen::Index k = 1; k < in.y.size(); ++k)
+                in.y[k] += in.u[k] > in.u[k - 1] ? 0.3 : -0.3;
+            })["backlash"]
+                .get<double>(),
+            0.8);
   const json saturated = with([](ComparisonInput& in) {
     in.y_model = 0.02 * in.u;
     in.y = (2.0 * (0.01 * in.u.array()).tanh()).matrix();  // same slope at 0, saturates at ±2
   });
   EXPECT_GT(saturated["saturation"].get<double>(), 1.5);
-  EXPECT_GT(saturated["saturation_sse_share"].get<double>(), saturated["saturation_sample_share"].get<double>());
+  EXPECT_GT(saturated["saturation_sse_share"].get<double>(),
+            saturated["saturation_sample_share"].get<double>());
 
   // A measured output 5 samples late: e ≈ −d·dŷ/dt with d = 5 ms.
   const json delayed = with([](ComparisonInput& in) {
-    for (Eigen::Index k = 0; k < in.y.size(); ++k) in.y[k] = in.y_model[std::max<Eigen::Index>(0, k - 5)];
+    for (Eigen::Index k = 0; k < in.y.size(); ++k)
+      in.y[k] = in.y_model[std::max<Eigen::Index>(0, k - 5)];
   });
   EXPECT_NEAR(delayed["delay_seconds"].get<double>(), 0.005, 0.001);
   EXPECT_GT(delayed["delay_correlation"].get<double>(), 0.9);
 }
 
-// ---- report ------------------------------------------------------------------------
+// ---- report ----
+
+TEST(ComparisonReport, VerdictsFollowTheNumbers) {
+  ComparisonInput in = sine_case(3000, 0.001, 2.0);
+  in.y += gaussian(3000, 0.05, 21);
+  const json good = compare_signals(in);
+  const std::string white = comparison_markdown(in, good, "t", "m", false, "");
+  EXPECT_NE(white.find("the residual is white"), std::string::npos);
+  EXPECT_NE(white.find("at the noise floor"), std::string::npos);
+  EXPECT_EQ(white.find("!["), std::string::npos);  // no images to embed
+
+  in.y += 0.3 * in.u.cwiseAbs2() / 100.0;  // a large missing even term
+  const json bad = compare_signals(in);
+  const std::string coloured = comparison_markdown(in, bad, "t", "m", true, "");
+  EXPECT_NE(coloured.find("**not white**"), std::string::npos);
+  EXPECT_NE(coloured.find("well above the noise floor"), std::string::npos);
+  EXPECT_NE(coloured.find("![Residual over time"), std::string::npos);
+}
+
+// ---- report writing ------------------------------------------------------------------------
 
 bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 
@@ -385,7 +441,8 @@ TEST(ComparisonReport, WritesMetricsReportAndFigures) {
   for (const char* part : {"# Synthetic test", "`hysteresis,msd`", "| held out |", "Noise floor",
                            "Ljung–Box", "sine\\|5Hz", "| loading |", "asymmetry", "residual.svg"})
     EXPECT_NE(report.find(part), std::string::npos) << part;
-  for (const char* name : {"fit_model_time", "fit_model_loops", "residual", "segment_rmse", "correlation"}) {
+  for (const char* name :
+       {"fit_model_time", "fit_model_loops", "residual", "segment_rmse", "correlation"}) {
     EXPECT_TRUE(fs::exists(dir / (std::string(name) + ".gp"))) << name;
     if (gnuplot_installed()) {
       EXPECT_GT(fs::file_size(dir / (std::string(name) + ".png")), 1000u) << name;

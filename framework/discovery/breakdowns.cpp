@@ -16,8 +16,8 @@ nlohmann::json metrics(const BreakdownInput& in, const Rows& rows) {
 }
 
 std::string part_of(const BreakdownInput& in, const Rows& rows) {
-  const auto estimation = std::count_if(rows.begin(), rows.end(),
-                                        [&](Eigen::Index i) { return in.estimation[std::size_t(i)]; });
+  const auto estimation = std::count_if(
+      rows.begin(), rows.end(), [&](Eigen::Index i) { return in.estimation[std::size_t(i)]; });
   if (estimation == long(rows.size())) return "estimation";
   return estimation == 0 ? "heldout" : "mixed";
 }

@@ -30,7 +30,9 @@ struct ComparisonInput {
 //  "residual": computed on the residual e = y − ŷ of the whole record
 //     {"computed_on": "whole record", "mean", "std",
 //      "acf":  {"lags": [1..25], "values", "bound", "outside"},
-//      "ccf":  {"lags": [-25..25], "values", "bound", "outside", "peak_lag"},
+//      "ccf":  {"lags": [-25..25], "values", "bound", "outside", "peak_lag",
+//               "input_lag1_autocorrelation": r_uu(1); near 1 the input is smooth
+//               and r_ue spreads over many lags, so peak_lag is no delay estimate},
 //      "ljung_box": {"lags": h = min(20, N/5), "q", "p_value"},
 //      "white": p_value > 0.01}
 //     (residual_correlation.hpp: conventions, τ > 0 = residual vs past input)

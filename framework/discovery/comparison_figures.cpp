@@ -35,7 +35,8 @@ double json_number(const nlohmann::json& j) {
 // gnuplot data files take double-quoted strings; a quote inside becomes '.
 std::string data_string(std::string s) {
   std::replace(s.begin(), s.end(), '"', '\'');
-  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   return "\"" + s + "\"";
 }
 
@@ -45,7 +46,10 @@ std::vector<std::pair<double, double>> heldout_spans(const ComparisonInput& in) 
   std::vector<std::pair<double, double>> spans;
   const Eigen::Index n = in.estimation.size();
   for (Eigen::Index i = 0; i < n;) {
-    if (in.estimation[i] != 0) { ++i; continue; }
+    if (in.estimation[i] != 0) {
+      ++i;
+      continue;
+    }
     Eigen::Index end = i;
     while (end < n && in.estimation[end] == 0) ++end;
     // Half a sample either side, so a span of one sample still shows.
@@ -88,22 +92,24 @@ fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const n
   write_file_atomic(dir / "residual.dat", data);
   const double sigma = json_number(m["noise_floor"]["sigma"]);
   const bool has_heldout = m.contains("heldout");
-  std::string body =
-      "  plot \"residual.dat\" using 1:2 with lines lw 1 lc rgb \"" + std::string(kResidualColour) +
-      "\" title \"residual y − ŷ\"";
+  std::string body = "  plot \"residual.dat\" using 1:2 with lines lw 1 lc rgb \"" +
+                     std::string(kResidualColour) + "\" title \"residual y − ŷ\"";
   if (std::isfinite(sigma) && sigma > 0)
-    body += ", \\\n       sigma with lines dt 3 lw 1.5 lc rgb \"#000000\" title \"± noise σ\", \\\n"
-            "       -sigma with lines dt 3 lw 1.5 lc rgb \"#000000\" notitle";
+    body +=
+        ", \\\n       sigma with lines dt 3 lw 1.5 lc rgb \"#000000\" title \"± noise σ\", \\\n"
+        "       -sigma with lines dt 3 lw 1.5 lc rgb \"#000000\" notitle";
   if (has_heldout)
     body += ", \\\n       NaN with boxes fs solid 1.0 fc rgb \"#e6e6e6\" title \"held out\"";
   body += "\n";
   const std::string script =
-      gp::header("residual", "residual over time; held-out spans shaded, segment boundaries "
-                             "dashed,\n# noise floor as dotted lines",
+      gp::header("residual",
+                 "residual over time; held-out spans shaded, segment boundaries "
+                 "dashed,\n# noise floor as dotted lines",
                  "residual.dat (t residual)") +
       "residual_label = " + gp::quoted(with_unit("Residual y − ŷ", in.y_unit)) + "\n" +
-      "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" +
-      "set title " + gp::quoted("Residual — " + title) + " noenhanced offset 0, 1.2\n"
+      "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" + "set title " +
+      gp::quoted("Residual — " + title) +
+      " noenhanced offset 0, 1.2\n"
       "set xlabel \"Time t [s]\"\nset ylabel residual_label\n"
       "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\nset autoscale xfix\n"
       "# Room above the data for the segment names; the key sits above the frame.\n"
@@ -130,7 +136,8 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const nl
     data += std::to_string(k) + " " + data_string(segs[k]["segment"]) + " " +
             gp::number(json_number(segs[k]["rmse"])) + " " + part + "\n";
   }
-  if (segs.empty()) data += "0 \"all\" " + gp::number(json_number(m["all"]["rmse"])) + " estimation\n";
+  if (segs.empty())
+    data += "0 \"all\" " + gp::number(json_number(m["all"]["rmse"])) + " estimation\n";
   write_file_atomic(dir / "segment_rmse.dat", data);
   const std::size_t bars = std::max<std::size_t>(1, segs.size());
   const double sigma = json_number(m["noise_floor"]["sigma"]);
@@ -150,18 +157,26 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const nl
     body += ", \\\n       sigma with lines dt 2 lw 2 lc rgb \"#000000\" title \"noise σ\"";
   body += "\n";
   const std::string script =
-      gp::header("segment_rmse", "RMSE per segment (bars; colour: estimation / held out / mixed)"
-                                 ",\n# noise floor as a dashed line",
+      gp::header("segment_rmse",
+                 "RMSE per segment (bars; colour: estimation / held out / mixed)"
+                 ",\n# noise floor as a dashed line",
                  "segment_rmse.dat (index segment rmse part)") +
       "rmse_label = " + gp::quoted(with_unit("RMSE", in.y_unit)) + "\n" +
-      "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" +
-      "set title " + gp::quoted("Error per segment — " + title) + " noenhanced\n"
+      "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" + "set title " +
+      gp::quoted("Error per segment — " + title) +
+      " noenhanced\n"
       "set ylabel rmse_label\nset yrange [0:*]\n"
-      "set xrange [-0.6:" + gp::number(double(bars) - 0.4) + "]\n"
+      "set xrange [-0.6:" +
+      gp::number(double(bars) - 0.4) +
+      "]\n"
       "set style fill solid 0.85 border rgb \"#404040\"\nset boxwidth 0.7\n"
-      "set xtics nomirror noenhanced" + (bars > 6 ? " rotate by -35 left" : "") + "\n"
+      "# Many segments: names upright, ending at their bar, so none leaves the page.\n"
+      "set xtics nomirror noenhanced" +
+      (bars > 6 ? " rotate by 90 right" : "") +
+      "\n"
       "set grid ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-      "set key top left opaque samplen 2\nset offsets 0, 0, graph 0.12, 0\n" +
+      "set title offset 0, 1.2\nset tmargin 4\n"
+      "set key at graph 0, graph 1.01 left bottom horizontal samplen 2\n" +
       gp::render_all_terminals("segment_rmse", body);
   return gp::write_script(dir, "segment_rmse", script);
 }
@@ -178,29 +193,33 @@ double plot_limit(const nlohmann::json& c) {
 std::string correlation_block(const nlohmann::json& c, const std::string& what) {
   std::string out = "# " + what + ": lag value\n";
   for (std::size_t i = 0; i < c["lags"].size(); ++i)
-    out += std::to_string(c["lags"][i].get<int>()) + " " + gp::number(json_number(c["values"][i])) + "\n";
+    out += std::to_string(c["lags"][i].get<int>()) + " " + gp::number(json_number(c["values"][i])) +
+           "\n";
   return out;
 }
 
 std::string correlation_panel(const std::string& title, int index, const std::string& bound_var,
                               double limit, const std::string& xrange) {
   return "  set title " + gp::quoted(title) + "\n  set yrange [" + gp::number(-limit) + ":" +
-         gp::number(limit) + "]\n  set xrange " + xrange +
-         "\n  plot \"correlation.dat\" index " + std::to_string(index) +
+         gp::number(limit) + "]\n  set xrange " + xrange + "\n  plot \"correlation.dat\" index " +
+         std::to_string(index) +
          " using 1:2 with impulses lw 3 lc rgb \"#0072B2\" notitle, \\\n"
-         "       \"\" index " + std::to_string(index) +
+         "       \"\" index " +
+         std::to_string(index) +
          " using 1:2 with points pt 7 ps 0.5 lc rgb \"#0072B2\" notitle, \\\n       " + bound_var +
-         " with lines dt 2 lw 1.5 lc rgb \"#D55E00\" title \"99 % band\", \\\n       -" + bound_var +
+         " with lines dt 2 lw 1.5 lc rgb \"#D55E00\" title \"99 % band\", \\\n       -" +
+         bound_var +
          " with lines dt 2 lw 1.5 lc rgb \"#D55E00\" notitle, \\\n"
          "       0 with lines lw 1 lc rgb \"#404040\" notitle\n";
 }
 
-fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m, const std::string& title) {
+fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m,
+                            const std::string& title) {
   const auto& acf = m["residual"]["acf"];
   const auto& ccf = m["residual"]["ccf"];
-  write_file_atomic(dir / "correlation.dat", correlation_block(acf, "index 0: residual autocorrelation") +
-                                                 "\n\n" +
-                                                 correlation_block(ccf, "index 1: input-residual cross-correlation"));
+  write_file_atomic(dir / "correlation.dat",
+                    correlation_block(acf, "index 0: residual autocorrelation") + "\n\n" +
+                        correlation_block(ccf, "index 1: input-residual cross-correlation"));
   const int lags = int(acf["lags"].size());
   const std::string body =
       "  set multiplot layout 2, 1 title " + gp::quoted("Residual tests — " + title) +
@@ -209,11 +228,13 @@ fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m, const 
                         plot_limit(acf), "[0.5:" + std::to_string(lags) + ".5]") +
       "  set xlabel \"Lag τ [samples]  (τ > 0: residual against past input)\"\n" +
       correlation_panel("Cross-correlation of input and residual r_{ue}(τ)", 1, "ccf_bound",
-                        plot_limit(ccf), "[-" + std::to_string(lags) + ".5:" + std::to_string(lags) + ".5]") +
+                        plot_limit(ccf),
+                        "[-" + std::to_string(lags) + ".5:" + std::to_string(lags) + ".5]") +
       "  unset xlabel\n  unset multiplot\n";
   const std::string script =
-      gp::header("correlation", "residual autocorrelation (top) and input-residual "
-                                "cross-correlation\n# (bottom) with the 99 % band ±2.58/√N",
+      gp::header("correlation",
+                 "residual autocorrelation (top) and input-residual "
+                 "cross-correlation\n# (bottom) with the 99 % band ±2.58/√N",
                  "correlation.dat (index 0: ACF, index 1: CCF; lag value)") +
       "acf_bound = " + gp::number(json_number(acf["bound"])) + "\n" +
       "ccf_bound = " + gp::number(json_number(ccf["bound"])) + "\n" +
@@ -237,7 +258,8 @@ FigureFiles write_comparison_figures(const fs::path& dir, const ComparisonInput&
   files.scripts.push_back(residual_figure(dir, in, metrics, title));
   files.scripts.push_back(segment_figure(dir, in, metrics, title));
   files.scripts.push_back(correlation_figure(dir, metrics, title));
-  for (const char* d : {"residual.dat", "segment_rmse.dat", "correlation.dat"}) files.data.push_back(dir / d);
+  for (const char* d : {"residual.dat", "segment_rmse.dat", "correlation.dat"})
+    files.data.push_back(dir / d);
   return files;
 }
 

@@ -18,6 +18,10 @@ using nlohmann::json;
 constexpr double kAtNoiseFloor = 1.1;
 constexpr double kNearNoiseFloor = 2.0;
 constexpr std::size_t kWorstSegments = 10;
+// r_uu(1) above this: the input is too smooth for the CCF peak lag to mean a delay.
+constexpr double kSmoothInput = 0.9;
+// corr(e, −dŷ/dt) above this is reported as a delay.
+constexpr double kDelayCorrelation = 0.5;
 
 std::string num(const json& j) {
   if (j.is_number_integer()) return std::to_string(j.get<long long>());
@@ -74,9 +78,9 @@ std::string ratio_to_sigma(const json& rmse, const json& metrics) {
 
 std::string headline(const ComparisonInput& in, const json& m) {
   const std::string yu = unit(in.y_unit);
-  std::string out = "## Headline\n\n" +
-                    header_row({"part", "samples", "RMSE" + yu, "fit %", "relative error",
-                                "max \\|error\\|" + yu, "mean error" + yu, "RMSE / noise σ"});
+  std::string out =
+      "## Headline\n\n" + header_row({"part", "samples", "RMSE" + yu, "fit %", "relative error",
+                                      "max \\|error\\|" + yu, "mean error" + yu, "RMSE / noise σ"});
   for (const char* part : {"estimation", "heldout", "all"}) {
     if (!m.contains(part)) continue;
     const json& p = m[part];
@@ -84,10 +88,13 @@ std::string headline(const ComparisonInput& in, const json& m) {
                 num(p["fit_percent"]), num(p["relative_error"]), num(p["max_abs_error"]),
                 num(p["mean_error"]), ratio_to_sigma(p["rmse"], m)});
   }
-  out += "\nfit % = 100 (1 − ‖y − ŷ‖ / ‖y − ȳ‖); relative error = ‖y − ŷ‖ / ‖y‖. "
-         "Errors in units of y" + (in.y_unit.empty() ? std::string() : " (" + in.y_unit + ")") +
-         ". Model output by simulation over the whole record.\n";
-  if (!m.contains("heldout")) out += "No samples were held out: every number is on estimation data.\n";
+  out +=
+      "\nfit % = 100 (1 − ‖y − ŷ‖ / ‖y − ȳ‖); relative error = ‖y − ŷ‖ / ‖y‖. "
+      "Errors in units of y" +
+      (in.y_unit.empty() ? std::string() : " (" + in.y_unit + ")") +
+      ". The model output ŷ is taken as given (normally simulated over the whole record).\n";
+  if (!m.contains("heldout"))
+    out += "No samples were held out: every number is on estimation data.\n";
   return out + "\n";
 }
 
@@ -98,22 +105,29 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
   if (method == "periodic")
     how = "from repeated periods of the excitation, σ = RMS(y_p − y_{p+1})/√2 over " +
           num(f["pairs"]) + " sample pairs" +
-          (value(f["period"]) > 0 ? " (period " + num(f["period"]) + " samples)" : std::string(" (repeated segments)"));
+          (value(f["period"]) > 0 ? " (period " + num(f["period"]) + " samples)"
+                                  : std::string(" (repeated segments)"));
   else if (method == "difference_mad")
-    how = "from high-order differences of y (no repeated periods found): robust (MAD) estimate, "
-          "lowest over orders 2–6 (order " + num(f["order"]) + ")";
+    how =
+        "from high-order differences of y (no repeated periods found): robust (MAD) estimate, "
+        "lowest over orders 2–6 (order " +
+        num(f["order"]) + ")";
   else
     how = "not estimated (too few samples)";
-  std::string out = "## Noise floor\n\nσ = " + with_unit(num(f["sigma"]), in.y_unit) + ", " + how + ".\n\n";
+  std::string out =
+      "## Noise floor\n\nσ = " + with_unit(num(f["sigma"]), in.y_unit) + ", " + how + ".\n\n";
   const double r = value(f["rmse_over_sigma"]);
   if (!std::isfinite(r))
     out += "RMSE / σ is undefined.\n";
   else if (r <= kAtNoiseFloor)
-    out += "RMSE / σ = " + num(r) + ": the model error is at the noise floor; nothing systematic is left to find.\n";
+    out += "RMSE / σ = " + num(r) +
+           ": the model error is at the noise floor; nothing systematic is left to find.\n";
   else if (r <= kNearNoiseFloor)
-    out += "RMSE / σ = " + num(r) + ": the model error is close to the noise floor; little is left to find.\n";
+    out += "RMSE / σ = " + num(r) +
+           ": the model error is close to the noise floor; little is left to find.\n";
   else
-    out += "RMSE / σ = " + num(r) + ": the model error is well above the noise floor; a systematic error remains.\n";
+    out += "RMSE / σ = " + num(r) +
+           ": the model error is well above the noise floor; a systematic error remains.\n";
   return out + "\n";
 }
 
@@ -132,8 +146,10 @@ bool single_peak(const json& ccf, int lag) {
 std::string correlation_verdict(const json& m, double ts) {
   const json& r = m["residual"];
   const json& lb = r["ljung_box"];
-  std::string out = "## Residual tests\n\nComputed on the residual e = y − ŷ of the whole record "
-                    "(estimation and held-out samples together), N = " + num(m["n"]) + ".\n\n";
+  std::string out =
+      "## Residual tests\n\nComputed on the residual e = y − ŷ of the whole record "
+      "(estimation and held-out samples together), N = " +
+      num(m["n"]) + ".\n\n";
   const int acf_out = r["acf"]["outside"];
   if (r["white"].get<bool>())
     out += "- **Whiteness**: the residual is white (Ljung–Box Q = " + num(lb["q"]) + " over " +
@@ -141,29 +157,48 @@ std::string correlation_verdict(const json& m, double ts) {
            std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
            " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
   else
-    out += "- **Whiteness**: the residual is **not white** (Ljung–Box Q = " + num(lb["q"]) + " over " +
-           num(lb["lags"]) + " lags, p " + p_text(lb["p_value"]) + " ≤ 0.01): it still has structure "
-           "in time; " + std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
+    out += "- **Whiteness**: the residual is **not white** (Ljung–Box Q = " + num(lb["q"]) +
+           " over " + num(lb["lags"]) + " lags, p " + p_text(lb["p_value"]) +
+           " ≤ 0.01): it still has structure "
+           "in time; " +
+           std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
            " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
   const json& c = m["residual"]["ccf"];
   const int outside = c["outside"], lag = c["peak_lag"];
   const double peak = value(m["signatures"]["delay_ccf"]);
   out += "- **Input–residual cross-correlation**: " + std::to_string(outside) + " of " +
          std::to_string(c["lags"].size()) + " lags lie outside the 99 % band ±" + num(c["bound"]) +
-         " (about " + num(0.01 * double(c["lags"].size())) + " expected by chance); the largest is r = " +
-         num(peak) + " at τ = " + std::to_string(lag) + ". ";
+         " (about " + num(0.01 * double(c["lags"].size())) +
+         " expected by chance); the largest is r = " + num(peak) +
+         " at τ = " + std::to_string(lag) + ". ";
+  const double smooth = value(c["input_lag1_autocorrelation"]);
+  const bool narrow_band = smooth > kSmoothInput;
   if (outside <= 1)
     out += "The residual is independent of the input within the band.\n";
+  else if (narrow_band)
+    out += "The residual depends on the input, but the input is smooth (r_uu(1) = " + num(smooth) +
+           "), so the correlation spreads over many lags and the lag of its peak is no delay "
+           "estimate.\n";
   else if (lag > 0 && single_peak(c, lag))
-    out += "The residual follows the input " + std::to_string(lag) + " samples earlier, with one "
-           "sharp peak: a time delay of about " + num(lag * ts) + " s is missing.\n";
+    out += "The residual follows the input " + std::to_string(lag) +
+           " samples earlier, with one "
+           "sharp peak: a time delay of about " +
+           num(lag * ts) + " s is missing.\n";
   else if (lag > 0)
     out += "The residual depends on past input: unmodelled dynamics (rate dependence).\n";
   else if (lag == 0)
-    out += "The residual follows the present input: the static part (gain, asymmetry, saturation) is off.\n";
+    out +=
+        "The residual follows the present input: the static part (gain, asymmetry, saturation) is "
+        "off.\n";
   else
-    out += "The residual correlates with future input: feedback in the data, or a model that "
-           "reacts too early.\n";
+    out +=
+        "The residual correlates most with future input: feedback in the data, or a model that "
+        "reacts too early.\n";
+  const json& sig = m["signatures"];
+  if (value(sig["delay_correlation"]) > kDelayCorrelation && value(sig["delay_seconds"]) > 0)
+    out += "- **Delay**: the residual follows −dŷ/dt (r = " + num(sig["delay_correlation"]) +
+           "), as a measured output lagging the model by about " + num(sig["delay_seconds"]) +
+           " s would make it.\n";
   return out + "\n";
 }
 
@@ -171,18 +206,24 @@ std::string segment_table(const ComparisonInput& in, const json& m) {
   std::vector<json> segs(m["by_segment"].begin(), m["by_segment"].end());
   if (segs.empty()) return "";
   std::stable_sort(segs.begin(), segs.end(), [](const json& a, const json& b) {
-    return value(a["rmse"]) > value(b["rmse"]) || (std::isnan(value(b["rmse"])) && !std::isnan(value(a["rmse"])));
+    return value(a["rmse"]) > value(b["rmse"]) ||
+           (std::isnan(value(b["rmse"])) && !std::isnan(value(a["rmse"])));
   });
   const std::size_t shown = std::min(segs.size(), kWorstSegments);
   const std::string yu = unit(in.y_unit);
   std::string out = "### Segments, worst first" +
-                    (shown < segs.size() ? " (" + std::to_string(shown) + " of " + std::to_string(segs.size()) + ")" : std::string()) +
-                    "\n\n" + header_row({"segment", "part", "samples", "RMSE" + yu, "fit %", "max \\|error\\|" + yu, "RMSE / σ"});
+                    (shown < segs.size()
+                         ? " (" + std::to_string(shown) + " of " + std::to_string(segs.size()) + ")"
+                         : std::string()) +
+                    "\n\n" +
+                    header_row({"segment", "part", "samples", "RMSE" + yu, "fit %",
+                                "max \\|error\\|" + yu, "RMSE / σ"});
   for (std::size_t k = 0; k < shown; ++k) {
     const json& s = segs[k];
-    out += row({cell(s["segment"]), s["part"] == "heldout" ? "held out" : s["part"].get<std::string>(),
-                num(s["n"]), num(s["rmse"]), num(s["fit_percent"]), num(s["max_abs_error"]),
-                ratio_to_sigma(s["rmse"], m)});
+    out +=
+        row({cell(s["segment"]), s["part"] == "heldout" ? "held out" : s["part"].get<std::string>(),
+             num(s["n"]), num(s["rmse"]), num(s["fit_percent"]), num(s["max_abs_error"]),
+             ratio_to_sigma(s["rmse"], m)});
   }
   return out + "\n";
 }
@@ -190,21 +231,25 @@ std::string segment_table(const ComparisonInput& in, const json& m) {
 std::string amplitude_table(const ComparisonInput& in, const json& m) {
   const double total = value(m["all"]["sse"]);
   const std::string uu = unit(in.u_unit), yu = unit(in.y_unit);
-  std::string out = "### Input amplitude |u − mean u| (mean u = " + num(m["amplitude_binning"]["u_mean"]) +
-                    uu + "; equal-width bins)\n\n" +
-                    header_row({"bin", "\\|u − mean u\\|" + uu, "samples", "RMSE" + yu, "share of samples", "share of SSE"});
+  std::string out = "### Input amplitude |u − mean u| (mean u = " +
+                    with_unit(num(m["amplitude_binning"]["u_mean"]), in.u_unit) +
+                    "; equal-width bins)\n\n" +
+                    header_row({"bin", "\\|u − mean u\\|" + uu, "samples", "RMSE" + yu,
+                                "share of samples", "share of SSE"});
   const double n = value(m["n"]);
   for (const json& b : m["by_amplitude"])
-    out += row({num(b["bin"]), num(b["u_low"]) + " – " + num(b["u_high"]), num(b["n"]), num(b["rmse"]),
-                num(value(b["n"]) / n), total > 0 ? num(value(b["sse"]) / total) : "–"});
+    out +=
+        row({num(b["bin"]), num(b["u_low"]) + " – " + num(b["u_high"]), num(b["n"]), num(b["rmse"]),
+             num(value(b["n"]) / n), total > 0 ? num(value(b["sse"]) / total) : "–"});
   return out + "\n";
 }
 
 std::string branch_table(const ComparisonInput& in, const json& m) {
   const std::string yu = unit(in.y_unit);
-  std::string out = "### Branch (loading Δu > 0, unloading Δu < 0, holding |Δu| ≤ " +
-                    num(m["branch_tolerance"]) + unit(in.u_unit) + ")\n\n" +
-                    header_row({"branch", "samples", "RMSE" + yu, "mean error" + yu, "max \\|error\\|" + yu});
+  std::string out =
+      "### Branch (loading Δu > 0, unloading Δu < 0, holding |Δu| ≤ " +
+      with_unit(num(m["branch_tolerance"]), in.u_unit) + ")\n\n" +
+      header_row({"branch", "samples", "RMSE" + yu, "mean error" + yu, "max \\|error\\|" + yu});
   for (const char* b : {"loading", "unloading", "holding"}) {
     const json& g = m["by_branch"][b];
     out += row({b, num(g["n"]), num(g["rmse"]), num(g["mean_error"]), num(g["max_abs_error"])});
@@ -249,7 +294,8 @@ std::string failure_summary(const ComparisonInput& in, const json& m) {
   const double total = value(m["all"]["sse"]), n = value(m["n"]);
   if (total > 0 && n > 0)
     out += "- The largest input amplitudes (top bin) hold " + num(100 * value(top["n"]) / n) +
-           " % of the samples and " + num(100 * value(top["sse"]) / total) + " % of the squared error.\n";
+           " % of the samples and " + num(100 * value(top["sse"]) / total) +
+           " % of the squared error.\n";
   const json& b = m["by_branch"];
   if (b["loading"]["rmse"].is_number() && b["unloading"]["rmse"].is_number())
     out += "- RMSE while loading " + with_unit(num(b["loading"]["rmse"]), in.y_unit) +
@@ -282,9 +328,10 @@ constexpr SignatureDoc kSignatureDocs[] = {
 };
 
 std::string signature_table(const json& m) {
-  std::string out = "## Residual signatures\n\nEach number points at one missing effect "
-                    "(correlations in [−1, 1]; near 0 means no sign of it).\n\n" +
-                    header_row({"statistic", "value", "what it points at"}, true);
+  std::string out =
+      "## Residual signatures\n\nEach number points at one missing effect "
+      "(correlations in [−1, 1]; near 0 means no sign of it).\n\n" +
+      header_row({"statistic", "value", "what it points at"}, true);
   for (const auto& d : kSignatureDocs)
     if (m["signatures"].contains(d.key))
       out += row({std::string("`") + d.key + "`", num(m["signatures"][d.key]), cell(d.meaning)});
@@ -307,7 +354,8 @@ std::string figures(bool images, const std::string& note) {
   for (const auto& f : list) {
     const std::string name = f.name;
     if (images) out += "![" + std::string(f.caption) + "](" + name + ".png)\n\n";
-    out += std::string(f.caption) + ": [svg](" + name + ".svg), [pdf](" + name + ".pdf), [gnuplot script](" + name + ".gp)\n\n";
+    out += std::string(f.caption) + ": [svg](" + name + ".svg), [pdf](" + name +
+           ".pdf), [gnuplot script](" + name + ".gp)\n\n";
   }
   if (!note.empty()) out += "_" + note + "_\n";
   return out;
@@ -315,23 +363,26 @@ std::string figures(bool images, const std::string& note) {
 
 }  // namespace
 
-std::string comparison_markdown(const ComparisonInput& in, const json& metrics, const std::string& title,
-                                const std::string& model_text, bool images, const std::string& figure_note) {
+std::string comparison_markdown(const ComparisonInput& in, const json& metrics,
+                                const std::string& title, const std::string& model_text,
+                                bool images, const std::string& figure_note) {
   const double ts = value(metrics["sample_time"]);
-  std::string out = "# " + title + "\n\nModel: `" + (model_text.empty() ? std::string("(not named)") : model_text) +
-                    "`. " + num(metrics["n"]) + " samples, sample time " + num(ts) + " s" +
+  std::string out = "# " + title + "\n\nModel: `" +
+                    (model_text.empty() ? std::string("(not named)") : model_text) + "`. " +
+                    num(metrics["n"]) + " samples, sample time " + num(ts) + " s" +
                     (in.u_unit.empty() ? std::string() : ", input in " + in.u_unit) +
                     (in.y_unit.empty() ? std::string() : ", output in " + in.y_unit) +
                     ". All numbers are in metrics.json.\n\n";
   out += headline(in, metrics) + noise_floor(in, metrics) + correlation_verdict(metrics, ts);
-  out += "## Where the model fails\n\n" + failure_summary(in, metrics) + segment_table(in, metrics) +
-         amplitude_table(in, metrics) +
-         branch_table(in, metrics) + time_table(in, metrics);
+  out += "## Where the model fails\n\n" + failure_summary(in, metrics) +
+         segment_table(in, metrics) + amplitude_table(in, metrics) + branch_table(in, metrics) +
+         time_table(in, metrics);
   return out + signature_table(metrics) + figures(images, figure_note);
 }
 
-std::vector<fs::path> write_comparison(const fs::path& dir, const ComparisonInput& in, const json& metrics,
-                                       const std::string& title, const std::string& model_text) {
+std::vector<fs::path> write_comparison(const fs::path& dir, const ComparisonInput& in,
+                                       const json& metrics, const std::string& title,
+                                       const std::string& model_text) {
   fs::create_directories(dir);
   std::vector<fs::path> written;
   write_file_atomic(dir / "metrics.json", metrics.dump(2) + "\n");
@@ -344,7 +395,8 @@ std::vector<fs::path> write_comparison(const fs::path& dir, const ComparisonInpu
   written.insert(written.end(), images.begin(), images.end());
   const bool have_png = std::any_of(images.begin(), images.end(),
                                     [](const fs::path& p) { return p.extension() == ".png"; });
-  write_file_atomic(dir / "report.md", comparison_markdown(in, metrics, title, model_text, have_png, note));
+  write_file_atomic(dir / "report.md",
+                    comparison_markdown(in, metrics, title, model_text, have_png, note));
   written.push_back(dir / "report.md");
   return written;
 }

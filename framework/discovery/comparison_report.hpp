@@ -15,10 +15,10 @@ namespace hystbench {
 // missing. `title` heads the report, `model_text` describes the model (e.g.
 // "hysteresis,asymmetry,msd"). Returns the files written.
 std::vector<std::filesystem::path> write_comparison(const std::filesystem::path& dir,
-                                                   const ComparisonInput& in,
-                                                   const nlohmann::json& metrics,
-                                                   const std::string& title,
-                                                   const std::string& model_text);
+                                                    const ComparisonInput& in,
+                                                    const nlohmann::json& metrics,
+                                                    const std::string& title,
+                                                    const std::string& model_text);
 
 // The text of report.md. `figure_note` is one line shown under the
 // figures (e.g. that gnuplot was missing); `images` says whether the

@@ -69,7 +69,8 @@ PairSum periodic_within_runs(const Eigen::VectorXd& u, const Eigen::VectorXd& y,
                              const std::vector<SegmentRun>& runs) {
   PairSum sum;
   for (const auto& r : runs)
-    if (const Eigen::Index p = exact_period(u, r.begin, r.end)) add_periodic(sum, y, r.begin, r.end, p);
+    if (const Eigen::Index p = exact_period(u, r.begin, r.end))
+      add_periodic(sum, y, r.begin, r.end, p);
   return sum;
 }
 
@@ -95,7 +96,8 @@ PairSum repeated_labels(const Eigen::VectorXd& u, const Eigen::VectorXd& y,
     for (std::size_t p = m / 2; p + 1 < m; ++p) {
       const SegmentRun& a = *occurrences[p];
       const SegmentRun& b = *occurrences[p + 1];
-      if (a.size() == b.size() && same_input(u, a, b)) sum.add(y, a.begin, a.end, b.begin - a.begin);
+      if (a.size() == b.size() && same_input(u, a, b))
+        sum.add(y, a.begin, a.end, b.begin - a.begin);
     }
   }
   return sum;

@@ -26,11 +26,11 @@ namespace hystbench {
 
 struct NoiseFloor {
   double sigma = 0;
-  std::string method;      // "periodic", "difference_mad" or "none"
-  long pairs = 0;          // periodic: sample pairs compared
-  Eigen::Index period = 0; // periodic from u: period in samples of the first stretch used
-                           // (0 for repeated labels)
-  int order = 0;           // difference_mad: order m that gave the minimum
+  std::string method;       // "periodic", "difference_mad" or "none"
+  long pairs = 0;           // periodic: sample pairs compared
+  Eigen::Index period = 0;  // periodic from u: period in samples of the first stretch used
+                            // (0 for repeated labels)
+  int order = 0;            // difference_mad: order m that gave the minimum
 };
 
 NoiseFloor estimate_noise_floor(const Eigen::VectorXd& u, const Eigen::VectorXd& y,

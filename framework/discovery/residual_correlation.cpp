@@ -12,9 +12,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // 99 % two-sided quantile of the standard normal distribution.
 constexpr double kBand99 = 2.58;
 
-Eigen::VectorXd centred(const Eigen::VectorXd& v) {
-  return (v.array() - v.mean()).matrix();
-}
+Eigen::VectorXd centred(const Eigen::VectorXd& v) { return (v.array() - v.mean()).matrix(); }
 
 double band(Eigen::Index n) { return n > 0 ? kBand99 / std::sqrt(double(n)) : kNaN; }
 
@@ -106,6 +104,10 @@ LjungBox ljung_box(const Eigen::VectorXd& e, int max_lags) {
   LjungBox lb;
   const Eigen::Index n = e.size();
   lb.lags = std::max(1, int(std::min<Eigen::Index>(max_lags, n / 5)));
+  if (!e.allFinite()) {  // a diverged model: nothing can be said, least of all "white"
+    lb.q = lb.p_value = std::numeric_limits<double>::quiet_NaN();
+    return lb;
+  }
   if (n < 2) return lb;
   const Correlation r = autocorrelation(e, lb.lags);
   double sum = 0;

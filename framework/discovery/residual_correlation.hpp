@@ -34,6 +34,7 @@ struct LjungBox {
   double q = 0, p_value = 1;
 };
 // h = min(max_lags, N/5), at least 1; p from the χ²(h) survival function.
+// A constant residual (or N < 2) has Q = 0, p = 1; a non-finite one NaN.
 LjungBox ljung_box(const Eigen::VectorXd& e, int max_lags = 20);
 
 // Regularised lower incomplete gamma P(a, x) = γ(a, x)/Γ(a) and its

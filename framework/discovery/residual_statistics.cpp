@@ -47,7 +47,8 @@ Saturation saturation(const SignatureInput& in) {
   double top_sse = 0, total = in.e.squaredNorm();
   long top_n = 0;
   for (std::size_t i = 0; i < bin.size(); ++i)
-    if (bin[i] == kAmplitudeBins - 1) top_sse += in.e[Eigen::Index(i)] * in.e[Eigen::Index(i)], ++top_n;
+    if (bin[i] == kAmplitudeBins - 1)
+      top_sse += in.e[Eigen::Index(i)] * in.e[Eigen::Index(i)], ++top_n;
   Saturation s;
   if (bin.empty() || !(edges.back() > 0)) return s;
   s.sample_share = double(top_n) / double(bin.size());
@@ -106,15 +107,17 @@ FrequencyTrend frequency_trend(const SignatureInput& in) {
       const double fr = crossing_frequency(in.u, r.begin, r.end, in.sample_time);
       if (std::isfinite(fr)) crossings_f += fr, ++runs;
     }
-    if (runs > 0 && n > 0) f.push_back(crossings_f / double(runs)), rmse.push_back(std::sqrt(sse / double(n)));
+    if (runs > 0 && n > 0)
+      f.push_back(crossings_f / double(runs)), rmse.push_back(std::sqrt(sse / double(n)));
   }
   FrequencyTrend trend;
   std::vector<double> sorted = f;
   std::sort(sorted.begin(), sorted.end());
   // Frequencies within 1 % count as the same.
-  const auto distinct = std::unique(sorted.begin(), sorted.end(),
-                                    [](double a, double b) { return std::abs(a - b) <= 0.01 * b; }) -
-                        sorted.begin();
+  const auto distinct =
+      std::unique(sorted.begin(), sorted.end(),
+                  [](double a, double b) { return std::abs(a - b) <= 0.01 * b; }) -
+      sorted.begin();
   if (distinct < 3) return trend;
   const Eigen::Map<Eigen::VectorXd> fv(f.data(), Eigen::Index(f.size()));
   const Eigen::Map<Eigen::VectorXd> rv(rmse.data(), Eigen::Index(rmse.size()));

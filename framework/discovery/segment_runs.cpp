@@ -5,7 +5,8 @@
 namespace hystbench {
 
 std::vector<SegmentRun> segment_runs(const std::vector<std::string>& labels, Eigen::Index n) {
-  if (labels.empty()) return n > 0 ? std::vector<SegmentRun>{{"", 0, n}} : std::vector<SegmentRun>{};
+  if (labels.empty())
+    return n > 0 ? std::vector<SegmentRun>{{"", 0, n}} : std::vector<SegmentRun>{};
   std::vector<SegmentRun> runs;
   for (Eigen::Index i = 0; i < n;) {
     Eigen::Index end = i + 1;

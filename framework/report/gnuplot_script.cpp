@@ -35,11 +35,18 @@ std::string render_all_terminals(const std::string& name, const std::string& bod
   const std::string svg = tall ? "900,760" : "900,560";
   const std::string pdf = tall ? "6in,5in" : "6in,3.75in";
   return "\ndo for [ext in \"svg png pdf\"] {\n"
-         "  if (ext eq \"svg\") { set terminal svg size " + svg + " font \"Helvetica,12\" "
+         "  if (ext eq \"svg\") { set terminal svg size " +
+         svg +
+         " font \"Helvetica,12\" "
          "background rgb \"white\" }\n"
-         "  if (ext eq \"png\") { set terminal pngcairo size " + svg + " font \"Helvetica,11\" }\n"
-         "  if (ext eq \"pdf\") { set terminal pdfcairo size " + pdf + " font \"Helvetica,10\" }\n"
-         "  set output \"" + name + ".\".ext\n" + body + "}\nunset output\n";
+         "  if (ext eq \"png\") { set terminal pngcairo size " +
+         svg +
+         " font \"Helvetica,11\" }\n"
+         "  if (ext eq \"pdf\") { set terminal pdfcairo size " +
+         pdf +
+         " font \"Helvetica,10\" }\n"
+         "  set output \"" +
+         name + ".\".ext\n" + body + "}\nunset output\n";
 }
 
 std::filesystem::path write_script(const std::filesystem::path& dir, const std::string& name,
