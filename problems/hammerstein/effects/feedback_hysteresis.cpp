@@ -17,8 +17,9 @@
 //
 // Integration: classical RK4 with `substeps` steps per sample (default 20,
 // raised automatically when the oscillator is too stiff for the step), the
-// input interpolated between samples with a not-a-knot cubic spline. The
-// state starts at rest (y = y' = z = 0).
+// input interpolated between samples with a not-a-knot cubic spline. A step
+// in which the velocity or z changes sign is split at the crossing, where
+// |y'| and |z| have their kinks. The state starts at rest (y = y' = z = 0).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -89,7 +90,7 @@ class FeedbackHysteresis : public Effect {
       if (!(stiff <= double(kMaxSubsteps))) return false;
       sub = static_cast<int>(std::ceil(stiff));
     }
-    const double h = 1.0 / sub, h2 = 0.5 * h, h6 = h / 6.0;
+    const double h = 1.0 / sub;
 
     thread_local UniformCubicSpline spline;
     thread_local std::vector<UniformCubicSpline::Weights> weights;
@@ -105,33 +106,56 @@ class FeedbackHysteresis : public Effect {
     wv.resize(2 * sub + 1);
 
     // State (y, v = dy/dsample, z).
-    double y = 0.0, v = 0.0, z = 0.0;
-    auto accel = [&](double w, double y_, double v_, double z_) {
-      return w2 * (w - y_ - z_) - c1 * v_;
+    struct State {
+      double y, v, z;
     };
     auto zdot = [&](double v_, double z_) {
       return a * v_ - bg * std::abs(v_) * z_ - bd * v_ * std::abs(z_);
     };
+    // One RK4 step of length `step` with the input at its start, middle and end.
+    auto rk4 = [&](const State& s, double wa, double wm, double wb, double step) {
+      const double half = 0.5 * step, sixth = step / 6.0;
+      const double k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(s.v, s.z);
+      const double y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
+      const double k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(v2, z2);
+      const double y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
+      const double k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(v3, z3);
+      const double y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
+      const double k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(v4, z4);
+      return State{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
+                   s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
+                   s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
+    };
+    const bool hysteretic = a != 0.0;
+    State x{0.0, 0.0, 0.0};
     signal[0] = 0.0;
     for (Eigen::Index k = 0; k + 1 < n; ++k) {
       for (int j = 0; j <= 2 * sub; ++j) wv[j] = spline.value(k, weights[j]);
       for (int i = 0; i < sub; ++i) {
-        const double wa = wv[2 * i], wm = wv[2 * i + 1], wb = wv[2 * i + 2];
-        const double k1y = v, k1v = accel(wa, y, v, z), k1z = zdot(v, z);
-        const double y2 = y + h2 * k1y, v2 = v + h2 * k1v, z2 = z + h2 * k1z;
-        const double k2y = v2, k2v = accel(wm, y2, v2, z2), k2z = zdot(v2, z2);
-        const double y3 = y + h2 * k2y, v3 = v + h2 * k2v, z3 = z + h2 * k2z;
-        const double k3y = v3, k3v = accel(wm, y3, v3, z3), k3z = zdot(v3, z3);
-        const double y4 = y + h * k3y, v4 = v + h * k3v, z4 = z + h * k3z;
-        const double k4y = v4, k4v = accel(wb, y4, v4, z4), k4z = zdot(v4, z4);
-        y += h6 * (k1y + 2.0 * (k2y + k3y) + k4y);
-        v += h6 * (k1v + 2.0 * (k2v + k3v) + k4v);
-        z += h6 * (k1z + 2.0 * (k2z + k3z) + k4z);
+        State next = rk4(x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], h);
+        // |v| and |z| have kinks where v or z changes sign (velocity
+        // reversals, zero crossings of the hysteretic force); RK4 loses its
+        // order over a step containing one (error O(h^2) per event). Split
+        // the step at the crossing, located by linear interpolation.
+        if (hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0)) {
+          double theta = 1.0;
+          if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
+          if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
+          theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
+          auto w_at = [&](double frac) {  // frac of this sub-step
+            return spline.value(k, UniformCubicSpline::weights((double(i) + frac) * h));
+          };
+          const State mid = rk4(x, wv[2 * i], w_at(0.5 * theta), w_at(theta), theta * h);
+          next = rk4(mid, w_at(theta), w_at(0.5 * (1.0 + theta)), wv[2 * i + 2],
+                     (1.0 - theta) * h);
+        }
+        x = next;
       }
       // Also false for NaN.
-      if (!(std::abs(y) < kDivergence && std::abs(z) < kDivergence && std::abs(v) < kDivergence))
+      if (!(std::abs(x.y) < kDivergence && std::abs(x.z) < kDivergence &&
+            std::abs(x.v) < kDivergence))
         return false;
-      signal[k + 1] = y;
+      signal[k + 1] = x.y;
     }
     return true;
   }
