@@ -62,11 +62,20 @@ struct Objective {
   const ModelData* data;
   Eigen::Index count;  // samples scored (from the start)
   long evaluations = 0;
+  std::vector<double> best_so_far;  // after each evaluation
   double operator()(const Eigen::VectorXd& x) {
     ++evaluations;
     Eigen::VectorXd y;
-    if (!model->simulate(x, *data, y)) return std::numeric_limits<double>::infinity();
-    return (y.head(count) - data->y.head(count)).squaredNorm();
+    double sse = std::numeric_limits<double>::infinity();
+    if (model->simulate(x, *data, y)) sse = (y.head(count) - data->y.head(count)).squaredNorm();
+    best_so_far.push_back(best_so_far.empty() ? sse : std::min(sse, best_so_far.back()));
+    return sse;
+  }
+  // Evaluations until the best SSE came within `rel` of `target`.
+  long evaluations_to(double target, double rel) const {
+    for (std::size_t i = 0; i < best_so_far.size(); ++i)
+      if (best_so_far[i] <= target * (1.0 + rel)) return long(i + 1);
+    return -1;
   }
 };
 
@@ -266,6 +275,7 @@ int main(int argc, char** argv) {
 
   t0 = std::chrono::steady_clock::now();
   full.evaluations = 0;
+  full.best_so_far.clear();
   x = polish(full, bounds, x, nlopt::LN_BOBYQA, 2000);
   const long bobyqa = full.evaluations;
   x = polish(full, bounds, x, nlopt::LN_NELDERMEAD, 1000);
@@ -273,6 +283,10 @@ int main(int argc, char** argv) {
   std::printf("local stage: BOBYQA %ld simulations, then Nelder-Mead %ld, %.1f s\n", bobyqa,
               full.evaluations - 1 - bobyqa, seconds_since(t0));
   std::printf("fit: estimation RMSE %.4g m\n", std::sqrt(sse / double(data.size())) * scales.y);
+  std::printf("local stage: best SSE within 1e-2 / 1e-4 / 1e-6 of the final after %ld / %ld / %ld "
+              "simulations\n",
+              full.evaluations_to(sse, 1e-2), full.evaluations_to(sse, 1e-4),
+              full.evaluations_to(sse, 1e-6));
   print_params("fit", x, scales);
   const TestScores s = score(model, x, scales, test_ms, test_sw);
   std::printf("fit: test RMSE multisine %.4g m (periodic steady state), sweep %.4g m (from rest)\n",
