@@ -3,7 +3,8 @@
 // simulation RMSE on the two official test sets, which are used only for
 // that report.
 //
-//   boucwen_feasibility DATA_DIR [--seed N] [--substeps N] [--truth]
+//   boucwen_feasibility DATA_DIR [--seed N] [--substeps N] [--population N]
+//                       [--generations N] [--step-rel R] [--truth]
 //
 // DATA_DIR holds train_multisine_dynonet.csv, test_multisine.csv and
 // test_sinesweep.csv (columns t_s, u_N, y_m). --truth skips the fit and
@@ -15,6 +16,7 @@
 // objective is the SSE of the normalised output.
 #include <nlopt.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -180,8 +182,10 @@ Eigen::VectorXd differential_evolution(Objective& f, const Bounds& b, int popula
   return pop[best];
 }
 
+// Initial step of the local methods: `step_rel` of |x_j| (at most 2 % of the
+// range, at least 0.1 %), or 2 % of the range when step_rel is 0.
 Eigen::VectorXd polish(Objective& f, const Bounds& b, Eigen::VectorXd x, nlopt::algorithm alg,
-                       int max_evaluations) {
+                       int max_evaluations, double step_rel) {
   const int d = b.dimension();
   nlopt::opt opt(alg, d);
   opt.set_lower_bounds(std::vector<double>(b.lower.data(), b.lower.data() + d));
@@ -190,7 +194,11 @@ Eigen::VectorXd polish(Objective& f, const Bounds& b, Eigen::VectorXd x, nlopt::
   opt.set_ftol_rel(1e-12);
   opt.set_maxeval(max_evaluations);
   std::vector<double> step(d);
-  for (int j = 0; j < d; ++j) step[j] = 0.02 * (b.upper[j] - b.lower[j]);
+  for (int j = 0; j < d; ++j) {
+    const double range = b.upper[j] - b.lower[j];
+    step[j] = step_rel > 0.0 ? std::clamp(step_rel * std::abs(x[j]), 1e-3 * range, 0.02 * range)
+                             : 0.02 * range;
+  }
   opt.set_initial_step(step);
   opt.set_min_objective(
       [](unsigned n, const double* p, double*, void* data) {
@@ -211,20 +219,25 @@ Eigen::VectorXd polish(Objective& f, const Bounds& b, Eigen::VectorXd x, nlopt::
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s DATA_DIR [--seed N] [--substeps N] [--truth]\n", argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s DATA_DIR [--seed N] [--substeps N] [--population N] [--generations N] "
+                 "[--step-rel R] [--truth]\n",
+                 argv[0]);
     return 2;
   }
   const std::filesystem::path dir = argv[1];
   unsigned seed = 1;
   int substeps = 20;
   bool truth_only = false;
-  int population = 40, generations = 150;
+  int population = 40, generations = 300;
+  double step_rel = 0.0;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seed" && i + 1 < argc) seed = unsigned(std::atoi(argv[++i]));
     else if (a == "--substeps" && i + 1 < argc) substeps = std::atoi(argv[++i]);
     else if (a == "--population" && i + 1 < argc) population = std::atoi(argv[++i]);
     else if (a == "--generations" && i + 1 < argc) generations = std::atoi(argv[++i]);
+    else if (a == "--step-rel" && i + 1 < argc) step_rel = std::atof(argv[++i]);
     else if (a == "--truth") truth_only = true;
     else {
       std::fprintf(stderr, "unknown argument %s\n", a.c_str());
@@ -276,9 +289,9 @@ int main(int argc, char** argv) {
   t0 = std::chrono::steady_clock::now();
   full.evaluations = 0;
   full.best_so_far.clear();
-  x = polish(full, bounds, x, nlopt::LN_BOBYQA, 2000);
+  x = polish(full, bounds, x, nlopt::LN_BOBYQA, 2000, step_rel);
   const long bobyqa = full.evaluations;
-  x = polish(full, bounds, x, nlopt::LN_NELDERMEAD, 1000);
+  x = polish(full, bounds, x, nlopt::LN_NELDERMEAD, 1000, step_rel);
   const double sse = full(x);
   std::printf("local stage: BOBYQA %ld simulations, then Nelder-Mead %ld, %.1f s\n", bobyqa,
               full.evaluations - 1 - bobyqa, seconds_since(t0));
