@@ -60,16 +60,16 @@ Physical physical(const Eigen::VectorXd& x, const SignalScales& s) {
 }
 
 struct Objective {
+  Objective(const Model* m, const ModelData* d) : model(m), data(d) {}
   const Model* model;
   const ModelData* data;
-  Eigen::Index count;  // samples scored (from the start)
   long evaluations = 0;
   std::vector<double> best_so_far;  // after each evaluation
   double operator()(const Eigen::VectorXd& x) {
     ++evaluations;
     Eigen::VectorXd y;
     double sse = std::numeric_limits<double>::infinity();
-    if (model->simulate(x, *data, y)) sse = (y.head(count) - data->y.head(count)).squaredNorm();
+    if (model->simulate(x, *data, y)) sse = (y - data->y).squaredNorm();
     best_so_far.push_back(best_so_far.empty() ? sse : std::min(sse, best_so_far.back()));
     return sse;
   }
@@ -259,7 +259,7 @@ int main(int argc, char** argv) {
   const Eigen::VectorXd truth = normalised({2.0, 10.0, 5e4, 5e4, 800.0, -1100.0}, scales);
   print_params("truth", truth, scales);
   std::printf("truth inside the default bounds: %s\n", bounds.contains(truth) ? "yes" : "NO");
-  Objective full{&model, &data, data.size()};
+  Objective full(&model, &data);
   {
     const auto t0 = std::chrono::steady_clock::now();
     const double sse = full(truth);
@@ -274,7 +274,7 @@ int main(int argc, char** argv) {
   Model coarse_model = model;
   coarse_model.set_substeps(5);
   const ModelData coarse_data(head(train, 2 * 8192), scales);
-  Objective coarse{&coarse_model, &coarse_data, coarse_data.size()};
+  Objective coarse(&coarse_model, &coarse_data);
   std::mt19937_64 rng(seed);
   auto t0 = std::chrono::steady_clock::now();
   Eigen::VectorXd x = differential_evolution(coarse, bounds, population, generations, rng);
