@@ -15,5 +15,9 @@ Action add_plugin_option(CLI::App& command);
 Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
 Action add_simulate_command(CLI::App& app);
+Action add_fit_command(CLI::App& app);
+Action add_compare_command(CLI::App& app);
+Action add_diagnose_command(CLI::App& app);
+Action add_discover_command(CLI::App& app);
 
 }  // namespace hystbench::cli

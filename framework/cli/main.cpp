@@ -13,7 +13,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", HYSTBENCH_VERSION);
   std::vector<std::pair<CLI::App*, hystbench::cli::Action>> commands;
   for (auto add : {hystbench::cli::add_list_command, hystbench::cli::add_run_command,
-                   hystbench::cli::add_simulate_command}) {
+                   hystbench::cli::add_simulate_command, hystbench::cli::add_fit_command,
+                   hystbench::cli::add_compare_command, hystbench::cli::add_diagnose_command,
+                   hystbench::cli::add_discover_command}) {
     auto action = add(app);
     commands.emplace_back(app.get_subcommands({}).back(), action);
   }

@@ -6,13 +6,15 @@
 #include "framework/cli/commands.hpp"
 #include "framework/core/error.hpp"
 #include "framework/io/atomic_file.hpp"
+#include "framework/discovery/model_synthetic_data.hpp"
 #include "problems/hammerstein/synthetic_data.hpp"
 
 namespace hystbench::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string params, excitation, out, form = "increment", input_unit, output_unit;
+  std::string params, excitation, out, form = "increment", input_unit, output_unit, model;
+  int substeps = 0;
   double noise = 0.01;
   std::uint64_t seed = 1;
 };
@@ -27,20 +29,32 @@ nlohmann::json read_json_file(const std::string& path) {
   }
 }
 
-void simulate(const SimulateOptions& o) {
-  const auto params = read_hammerstein_params(read_json_file(o.params), o.params);
+SyntheticData make_data(const SimulateOptions& o) {
+  const auto values = read_json_file(o.params);
   const auto excitation = read_json_file(o.excitation);
-  SyntheticData s;
+  if (!o.model.empty()) {
+    Model model = Model::parse(o.model);
+    model.set_substeps(o.substeps);
+    return make_model_synthetic_data(model, values, excitation, o.noise, o.seed, o.params);
+  }
+  const auto params = read_hammerstein_params(values, o.params);
   try {
-    s = make_synthetic_data(params, bouc_wen_form_from_string(o.form), excitation, o.noise, o.seed);
+    return make_synthetic_data(params, bouc_wen_form_from_string(o.form), excitation, o.noise, o.seed);
   } catch (const InputError& e) {
     throw InputError(o.excitation + ": " + e.what());
   }
+}
+
+void simulate(const SimulateOptions& o) {
+  SyntheticData s = make_data(o);
   std::filesystem::path truth_path(o.out);
   truth_path.replace_extension(".truth.json");
   std::ostringstream noise;
   noise << o.noise;
-  const std::string command = "hystbench simulate --params " + o.params + " --excitation " +
+  const std::string command = "hystbench simulate" +
+                              (o.model.empty() ? "" : " --model " + o.model) +
+                              (o.substeps ? " --substeps " + std::to_string(o.substeps) : "") +
+                              " --params " + o.params + " --excitation " +
                               o.excitation + " --noise " + noise.str() +
                               " --seed " + std::to_string(o.seed) +
                               (o.input_unit.empty() ? "" : " --input-unit " + o.input_unit) +
@@ -48,8 +62,9 @@ void simulate(const SimulateOptions& o) {
                               " --out " + o.out;
   s.truth["generated_by"] = command;
   s.truth["units"] = {{"t", "s"}, {"u", o.input_unit}, {"y", o.output_unit}};
+  const std::string kind = o.model.empty() ? "Hammerstein (MFC-like)" : "model " + o.model;
   write_measurement(o.out, s.data,
-                    {"Synthetic Hammerstein (MFC-like) data; true parameters and noise floor in " +
+                    {"Synthetic " + kind + " data; true parameters and noise floor in " +
                          truth_path.filename().string(),
                      "Regenerate: " + command});
   write_file_atomic(truth_path, s.truth.dump(2) + "\n");
@@ -62,9 +77,19 @@ void simulate(const SimulateOptions& o) {
 Action add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   auto* cmd = app.add_subcommand(
-      "simulate", "Write a synthetic measurement CSV from true Hammerstein parameters, an excitation "
-                  "spec and seeded Gaussian noise, with DATA.truth.json beside it");
-  cmd->add_option("--params", o->params, "JSON file with the 13 parameters (alpha ... d)")->required();
+      "simulate", "Write a synthetic measurement CSV from true parameters (of the 13-parameter "
+                  "Hammerstein model, or of a --model of effects), an excitation spec and seeded "
+                  "Gaussian noise, with DATA.truth.json beside it");
+  cmd->add_option("--params", o->params,
+                  "JSON file with the 13 parameters (alpha ... d), or with --model the physical "
+                  "value of every parameter {\"gain\": .., \"hysteresis.A\": .., ...}")
+      ->required();
+  cmd->add_option("--model", o->model,
+                  "simulate this list of effects (e.g. hysteresis,asymmetry,msd,creep) instead of "
+                  "the Hammerstein seed model");
+  cmd->add_option("--substeps", o->substeps,
+                  "integration sub-steps per sample of ODE effects (0: each effect's default)")
+      ->capture_default_str()->check(CLI::Range(0, 1000));
   cmd->add_option("--excitation", o->excitation, "JSON excitation spec (sine / sweep / steps segments)")
       ->required();
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")

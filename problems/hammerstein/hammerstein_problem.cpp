@@ -5,6 +5,7 @@
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
 #include "framework/io/data_path.hpp"
+#include "framework/io/truth_file.hpp"
 
 namespace hystbench {
 namespace {
@@ -24,16 +25,6 @@ Bounds apply_bound_overrides(Bounds bounds, const nlohmann::json& overrides) {
       throw InputError(key + " = " + it->dump() + ": the lower bound must be below the upper bound");
   }
   return bounds;
-}
-
-// DATA.truth.json beside DATA.csv, or an empty object.
-nlohmann::json read_truth(const std::filesystem::path& data_file) {
-  std::filesystem::path truth = data_file;
-  truth.replace_extension(".truth.json");
-  std::ifstream in(truth);
-  if (!in) return nlohmann::json::object();
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  return j.is_object() ? j : nlohmann::json::object();
 }
 
 HammersteinProblem::Units read_units(const nlohmann::json& j, const std::string& where) {

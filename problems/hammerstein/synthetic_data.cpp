@@ -24,6 +24,13 @@ HammersteinParams read_hammerstein_params(const nlohmann::json& j, const std::st
   return HammersteinParams::from_vector(x);
 }
 
+double add_relative_noise(Eigen::VectorXd& y, double relative, std::uint64_t seed) {
+  const double sd = relative * std::sqrt(y.squaredNorm() / double(y.size()));
+  Rng rng(seed);
+  for (Eigen::Index k = 0; k < y.size(); ++k) y[k] += sd * rng.normal();
+  return sd;
+}
+
 SyntheticData make_synthetic_data(const HammersteinParams& params, BoucWenForm form,
                                   const nlohmann::json& excitation_spec, double noise_relative,
                                   std::uint64_t seed) {
@@ -33,11 +40,8 @@ SyntheticData make_synthetic_data(const HammersteinParams& params, BoucWenForm f
   if (!clean.allFinite() || !linear_blocks_stable(params, Ts))
     throw InputError("parameters: the model diverges on this excitation (unstable block?)");
 
-  const double rms = std::sqrt(clean.squaredNorm() / double(clean.size()));
-  const double sd = noise_relative * rms;
-  Rng rng(seed);
   Measurement m{ex.t, ex.u, clean, ex.segment, Ts, ""};
-  for (Eigen::Index k = 0; k < m.y.size(); ++k) m.y[k] += sd * rng.normal();
+  const double sd = add_relative_noise(m.y, noise_relative, seed);
 
   nlohmann::json p = nlohmann::json::object();
   const Eigen::VectorXd x = params.to_vector();

@@ -18,6 +18,9 @@ struct SyntheticData {
 // Every one of the 13 names is required. Throws InputError naming the key.
 HammersteinParams read_hammerstein_params(const nlohmann::json& j, const std::string& where);
 
+// Adds seeded Gaussian noise of sd relative·RMS(y) to y; returns the sd.
+double add_relative_noise(Eigen::VectorXd& y, double relative, std::uint64_t seed);
+
 // noise_relative: noise standard deviation as a fraction of the RMS of the
 // noise-free output. The truth's "noise_floor_sse" is the fitness of the true
 // parameters on the noisy data: no fit can be expected to do better.

@@ -9,11 +9,17 @@
 //   y''/wn^2 + 2 zeta y'/wn + y + z_n = w
 //   z_n' = a y' - bg |y'| z_n - bd y' |z_n|
 //
-// with wn = 2 pi 10^log10_fn = sqrt(k/m), zeta = c / (2 sqrt(k m)), a = alpha/k,
+// with wn = 2 pi / period = sqrt(k/m), zeta = c / (2 sqrt(k m)), a = alpha/k,
 // bg = beta gamma y_rms, bd = beta delta y_rms. beta alone is not
 // identifiable for nu = 1 (only beta gamma and beta delta enter); nu is
 // fixed at 1, which makes the loop rate-independent (z_n depends on the path
 // of y, not on its speed). At a = 0, z_n stays 0: a linear oscillator.
+//
+// The natural period (not the frequency) and the damping ratio carry the
+// names of msd's parameters, so that adding this effect to a model with msd
+// starts from msd's resonance. Period 0 is an infinitely stiff oscillator:
+// the effect passes its input through exactly, which makes it neutral
+// (period 0, alpha 0) when added to a model without msd.
 //
 // Integration: classical RK4 with `substeps` steps per sample (default 20,
 // raised automatically when the oscillator is too stiff for the step), the
@@ -49,9 +55,9 @@ class FeedbackHysteresis : public Effect {
     i.stage = EffectStage::Dynamics;
     i.extends = "msd";
     i.params = {
-        {"log10_fn", 0.5, 3.5, 3.5, 0, 0, "log10(Hz)",
-         "natural frequency sqrt(k/m)/(2 pi) of the linear part, log10 of Hz"},
-        {"zeta", 1e-3, 2.0, 0.7, 0, 0, "", "damping ratio c/(2 sqrt(k m))"},
+        {"period", 0.0, 0.2, 0.0, 0, 0, "s",
+         "natural period 2 pi sqrt(m/k) of the linear part (0 = infinitely stiff: pass-through)"},
+        {"zeta", 1e-3, 2.0, 0.5, 0, 0, "", "damping ratio c/(2 sqrt(k m))"},
         {"alpha", 0.0, 4.0, 0.0, 0, 0, "",
          "hysteretic stiffness relative to the linear one, alpha/k (0: no hysteresis)"},
         {"beta_gamma", -3.0, 3.0, 0.0, -1, 0, "",
@@ -68,10 +74,11 @@ class FeedbackHysteresis : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double fn = std::pow(10.0, p[0]);
-    const double zeta = p[1], a = p[2], bg = p[3], bd = p[4];
+    const double period = p[0], zeta = p[1], a = p[2], bg = p[3], bd = p[4];
+    if (period == 0.0) return true;
+    const double fn = 1.0 / period;
     const double ts = ctx.sample_time;
-    if (!std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !std::isfinite(a) ||
+    if (!(period > 0.0) || !std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !std::isfinite(a) ||
         !std::isfinite(bg) || !std::isfinite(bd) || !(ts > 0.0) || a <= -1.0)
       return false;
     const Eigen::Index n = signal.size();

@@ -1,0 +1,104 @@
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "framework/cli/commands.hpp"
+#include "framework/cli/model_options.hpp"
+#include "framework/core/error.hpp"
+#include "framework/discovery/comparison_report.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/discovery/model_comparison.hpp"
+
+namespace hystbench::cli {
+namespace {
+
+struct CompareOptions {
+  DataOptions data;
+  OutputOptions output;
+  std::string fit;
+  int periods = 1;
+};
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec);
+}
+
+// The data as the fit saw them: its columns and units unless given, its
+// scales, and its hold-out when these are the data it was fitted on.
+ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& source,
+                   const CLI::App& cmd) {
+  if (o.data.columns.empty()) source.columns = fit.data.columns;
+  if (source.u_unit.empty()) source.u_unit = fit.data.u_unit;
+  if (source.y_unit.empty()) source.y_unit = fit.data.y_unit;
+  const Measurement m = source.load();
+  HoldoutSpec holdout;
+  if (cmd.count("--holdout"))
+    holdout = o.data.holdout_spec();
+  else if (same_file(source.path, fit.data.path))
+    holdout = fit.holdout;
+  else
+    holdout.mode = HoldoutSpec::Mode::None;
+  if (o.periods > 1) holdout.mode = HoldoutSpec::Mode::None;
+  return prepare_model_data(m, fit.scales, holdout);
+}
+
+void print_headline(const nlohmann::json& metrics, const std::string& unit) {
+  for (const char* part : {"estimation", "heldout", "all"}) {
+    if (!metrics.contains(part)) continue;
+    const auto& m = metrics[part];
+    std::cout << "  " << part << ": RMSE " << m["rmse"].dump() << " " << unit << ", fit "
+              << m["fit_percent"].dump() << " %, n " << m["n"].dump() << "\n";
+  }
+  if (metrics.contains("noise_floor"))
+    std::cout << "  estimated noise sigma " << metrics["noise_floor"]["sigma"].dump() << " " << unit
+              << "\n";
+}
+
+void compare(const CompareOptions& o, const CLI::App& cmd) {
+  const FitRecord fit = FitRecord::read(o.fit);
+  DataSource source = o.data.source();
+  const ModelData data = data_for(o, fit, source, cmd);
+  const auto dir = o.output.prepare("metrics.json");
+  Eigen::VectorXd y;
+  if (!simulate_physical(fit.model, fit.x, data, y, o.periods))
+    throw InputError(o.fit + ": the model diverges on " + o.data.data +
+                     " (input outside the range it was fitted on?)");
+  const auto input = comparison_input(data, std::move(y), source.u_unit, source.y_unit);
+  const auto metrics = compare_signals(input);
+  const auto files = write_comparison(dir, input, metrics,
+                                      "Model " + fit.model.text() + " against " + o.data.data,
+                                      fit.model.text());
+  std::cout << "model " << fit.model.text() << " on " << o.data.data
+            << (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) +
+                                    " periods)"
+                              : "")
+            << "\n";
+  print_headline(metrics, source.y_unit);
+  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
+}
+
+}  // namespace
+
+Action add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  auto* cmd = app.add_subcommand(
+      "compare", "Compare a fitted model (fit.json) with a measurement: metrics overall and by "
+                 "segment, amplitude, branch and time, residual whiteness and input correlation, "
+                 "noise floor; writes metrics.json, report.md and figures");
+  add_data_options(cmd, o->data);
+  cmd->add_option("--fit", o->fit, "fit.json written by `hystbench fit` or `discover`")
+      ->required();
+  cmd->add_option("--periodic", o->periods,
+                  "the data are one period of a periodic input: simulate this many periods from "
+                  "rest and score the last (steady state)")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  add_output_options(cmd, o->output);
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, cmd, load_plugins] {
+    load_plugins();
+    compare(*o, *cmd);
+  };
+}
+
+}  // namespace hystbench::cli

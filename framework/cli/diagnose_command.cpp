@@ -1,0 +1,90 @@
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "framework/cli/commands.hpp"
+#include "framework/cli/fit_summary.hpp"
+#include "framework/cli/model_options.hpp"
+#include "framework/core/error.hpp"
+#include "framework/discovery/diagnosis_report.hpp"
+#include "framework/harness/progress.hpp"
+#include "framework/harness/status_line.hpp"
+
+namespace hystbench::cli {
+namespace {
+
+struct DiagnoseCommandOptions {
+  DataOptions data;
+  FitCliOptions fit;
+  DiagnoseCliOptions diagnose;
+  OutputOptions output;
+  std::string model, from_fit;
+};
+
+void print_diagnosis(const Diagnosis& d, const std::string& unit) {
+  std::cout << "model " << d.model.text() << ": ";
+  print_errors(d.errors, unit);
+  std::cout << "candidates (best first):\n";
+  for (const auto& c : d.candidates)
+    std::cout << "  " << (c.significant ? "* " : "  ") << c.effect << "  dBIC "
+              << c.delta_bic << "  RMSE " << c.after.rmse_estimation << "  held-out "
+              << c.after.rmse_heldout << "\n";
+  std::cout << "verdict: " << d.verdict << "\n";
+  if (const Candidate* w = d.winner()) std::cout << w->evidence << "\n";
+}
+
+void run_diagnose(DiagnoseCommandOptions& o) {
+  if (o.model.empty() == o.from_fit.empty())
+    throw InputError("diagnose: give either --model LIST (fit it first) or --fit FIT.json");
+  DataSource source = o.data.source();
+  const Measurement m = source.load();
+  const HoldoutSpec holdout = o.data.holdout_spec();
+  StatusLine status(stderr_is_terminal());
+  FitOptions fit = o.fit.fit_options();
+  DiagnoseOptions options = o.diagnose.diagnose_options(fit, source);
+  Model model = o.model.empty() ? FitRecord::read(o.from_fit).model : Model::parse(o.model);
+  model.set_substeps(o.fit.substeps);
+  const auto dir = o.output.prepare("diagnosis.json");
+  options.fit.status = [&](const std::string& s) { status.show("diagnose " + model.text() + ": " + s); };
+
+  Eigen::VectorXd x;
+  std::optional<ModelData> data;
+  if (!o.from_fit.empty()) {
+    const FitRecord start = FitRecord::read(o.from_fit);
+    data = prepare_model_data(m, start.scales, holdout);
+    x = start.x;
+  } else {
+    data = prepare_model_data(m, SignalScales::of(m), holdout);
+    x = fit_model(model, *data, options.fit).x;
+  }
+  const Diagnosis d = diagnose(model, x, *data, options);
+  status.finish();
+  std::string note;
+  write_diagnosis(dir, d, *data, source, holdout, note);
+  print_diagnosis(d, source.y_unit);
+  if (!note.empty()) std::cout << note << "\n";
+  std::cout << "wrote " << (dir / "report.md").string() << " and diagnosis.json\n";
+}
+
+}  // namespace
+
+Action add_diagnose_command(CLI::App& app) {
+  auto o = std::make_shared<DiagnoseCommandOptions>();
+  auto* cmd = app.add_subcommand(
+      "diagnose", "Fit a model, then try every catalog effect it lacks (warm-started refits) and "
+                  "name the missing one by the drop in BIC and held-out error, with its residual "
+                  "evidence; writes diagnosis.json, report.md and figures");
+  add_data_options(cmd, o->data);
+  cmd->add_option("--model", o->model, "effects of the model to diagnose, e.g. hysteresis,msd");
+  cmd->add_option("--fit", o->from_fit, "diagnose this fit.json instead of fitting --model");
+  add_fit_options(cmd, o->fit);
+  add_diagnose_options(cmd, o->diagnose);
+  add_output_options(cmd, o->output);
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, load_plugins] {
+    load_plugins();
+    run_diagnose(*o);
+  };
+}
+
+}  // namespace hystbench::cli

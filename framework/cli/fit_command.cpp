@@ -1,0 +1,72 @@
+#include <iostream>
+#include <memory>
+
+#include "framework/cli/commands.hpp"
+#include "framework/cli/fit_summary.hpp"
+#include "framework/cli/model_options.hpp"
+#include "framework/discovery/fit_errors.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/harness/progress.hpp"
+#include "framework/harness/status_line.hpp"
+#include "framework/io/atomic_file.hpp"
+
+namespace hystbench::cli {
+namespace {
+
+struct FitCommandOptions {
+  DataOptions data;
+  FitCliOptions fit;
+  OutputOptions output;
+  std::string model;
+};
+
+void fit(FitCommandOptions& o) {
+  DataSource source = o.data.source();
+  const Measurement m = source.load();
+  const HoldoutSpec holdout = o.data.holdout_spec();
+  const SignalScales scales = SignalScales::of(m);
+  const ModelData data = prepare_model_data(m, scales, holdout);
+  Model model = Model::parse(o.model);
+  model.set_substeps(o.fit.substeps);
+  FitOptions options = o.fit.fit_options();
+  const auto dir = o.output.prepare("fit.json");
+
+  StatusLine status(stderr_is_terminal());
+  options.status = [&](const std::string& s) { status.show("fit " + model.text() + ": " + s); };
+  const FitResult result = fit_model(model, data, options);
+  status.finish();
+
+  FitRecord record = make_fit_record(result.model, result.x, data, source, holdout, options.seed);
+  nlohmann::json fit_details = options.to_json();
+  fit_details["evaluations_used"] = result.evaluations;
+  fit_details["seconds"] = result.seconds;
+  fit_details["start_sse"] = result.start_sse;
+  record.details["fit"] = fit_details;
+  write_file_atomic(dir / "fit.json", record.to_json().dump(2) + "\n");
+  print_parameters(record);
+  print_errors(fit_errors(result.model, result.x, data), source.y_unit);
+  std::cout << "wrote " << (dir / "fit.json").string() << "\n";
+}
+
+}  // namespace
+
+Action add_fit_command(CLI::App& app) {
+  auto o = std::make_shared<FitCommandOptions>();
+  auto* cmd = app.add_subcommand(
+      "fit", "Fit a model (a list of physical effects) to a measurement: seeded global restarts, "
+             "each polished by an NLopt local method; writes DIR/fit.json");
+  add_data_options(cmd, o->data);
+  cmd->add_option("--model", o->model,
+                  "effects in signal-chain order, e.g. hysteresis,asymmetry,msd,arx "
+                  "(`hystbench list effects` lists them)")
+      ->required();
+  add_fit_options(cmd, o->fit);
+  add_output_options(cmd, o->output);
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, load_plugins] {
+    load_plugins();
+    fit(*o);
+  };
+}
+
+}  // namespace hystbench::cli

@@ -1,0 +1,15 @@
+#pragma once
+// What the fitting commands print about a fit.
+#include <string>
+
+#include "framework/discovery/fit_errors.hpp"
+#include "framework/discovery/fit_record.hpp"
+
+namespace hystbench::cli {
+
+// The model and one line per parameter: name, physical value, unit.
+void print_parameters(const FitRecord& r);
+// RMSE on the estimation and held-out samples.
+void print_errors(const FitErrors& e, const std::string& unit);
+
+}  // namespace hystbench::cli

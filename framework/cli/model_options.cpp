@@ -1,0 +1,113 @@
+#include "framework/cli/model_options.hpp"
+
+#include "framework/core/error.hpp"
+
+namespace hystbench::cli {
+
+DataSource DataOptions::source() const {
+  DataSource s;
+  s.path = data;
+  if (!columns.empty()) s.columns = ColumnMap::parse(columns);
+  s.u_unit = input_unit;
+  s.y_unit = output_unit;
+  return s;
+}
+
+void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
+  cmd->add_option("--data", o.data, "measurement CSV (columns t, u, y, optional segment)")
+      ->required();
+  cmd->add_option("--columns", o.columns, "column names when they differ, e.g. t=t_s,u=u_N,y=y_m");
+  cmd->add_option("--input-unit", o.input_unit,
+                  "unit of u for reports (default: from DATA.truth.json, if any)");
+  cmd->add_option("--output-unit", o.output_unit,
+                  "unit of y for reports (default: from DATA.truth.json, if any)");
+  if (with_holdout)
+    cmd->add_option("--holdout", o.holdout,
+                    "samples never used for fitting: auto (a quarter of the segments spread over "
+                    "the band, or the last quarter), none, last:FRACTION, segments:A,B")
+        ->capture_default_str();
+}
+
+FitOptions FitCliOptions::fit_options() const {
+  FitOptions f;
+  f.optimizer = optimizer;
+  try {
+    f.optimizer_params = nlohmann::json::parse(optimizer_params);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError("--optimizer-params: not valid JSON: " + std::string(e.what()));
+  }
+  f.evaluations = evaluations;
+  f.restarts = restarts;
+  f.local = local;
+  f.local_evaluations = local_evaluations;
+  f.seed = seed;
+  f.validate();
+  return f;
+}
+
+void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
+  cmd->add_option("--optimizer", o.optimizer, "global optimizer (see `hystbench list`)")
+      ->capture_default_str();
+  cmd->add_option("--optimizer-params", o.optimizer_params,
+                  "its parameters as JSON, e.g. '{\"restarts\": \"none\"}'")
+      ->capture_default_str();
+  cmd->add_option("--evaluations", o.evaluations,
+                  "global evaluations per restart (0: 1000 per parameter, at least 4000)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--restarts", o.restarts, "seeded global restarts")
+      ->capture_default_str()->check(CLI::Range(0, 1000));
+  cmd->add_option("--local", o.local, "NLopt local method of the polish")->capture_default_str();
+  cmd->add_option("--local-evaluations", o.local_evaluations,
+                  "polish evaluations per start (0: 300 per parameter, at least 1000)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", o.seed, "seed of every random choice")->capture_default_str();
+  cmd->add_option("--substeps", o.substeps,
+                  "integration sub-steps per sample of ODE effects (0: each effect's default)")
+      ->capture_default_str()->check(CLI::Range(0, 1000));
+}
+
+DiagnoseOptions DiagnoseCliOptions::diagnose_options(FitOptions fit, const DataSource& source) const {
+  DiagnoseOptions d;
+  d.fit = std::move(fit);
+  if (!candidates.empty()) {
+    // Model::parse checks each name against the catalog and refuses repeats.
+    d.candidates = Model::parse(candidates, "--candidates").effects();
+  }
+  d.bic_threshold = bic_threshold;
+  d.heldout_gain = heldout_gain;
+  d.u_unit = source.u_unit;
+  d.y_unit = source.y_unit;
+  return d;
+}
+
+void add_diagnose_options(CLI::App* cmd, DiagnoseCliOptions& o) {
+  cmd->add_option("--candidates", o.candidates,
+                  "effects to try, comma-separated (default: every effect not in the model)");
+  cmd->add_option("--bic-threshold", o.bic_threshold,
+                  "a candidate is significant when its BIC change is at or below this")
+      ->capture_default_str()->check(CLI::Range(-1e9, 0.0));
+  cmd->add_option("--heldout-gain", o.heldout_gain,
+                  "... and its held-out RMSE falls by at least this fraction")
+      ->capture_default_str()->check(CLI::Range(0.0, 0.99));
+}
+
+std::filesystem::path OutputOptions::prepare(const std::string& marker) const {
+  namespace fs = std::filesystem;
+  const fs::path dir(out);
+  std::error_code ec;
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw InputError("--out " + out + ": exists and is not a folder");
+  if (fs::exists(dir / marker) && !force)
+    throw InputError("--out " + out + ": already holds " + marker +
+                     "; pass --force to replace it or choose another folder");
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + out + ": cannot create this folder: " + ec.message());
+  return dir;
+}
+
+void add_output_options(CLI::App* cmd, OutputOptions& o) {
+  cmd->add_option("--out", o.out, "folder for the results")->required();
+  cmd->add_flag("--force", o.force, "replace earlier results in --out");
+}
+
+}  // namespace hystbench::cli

@@ -1,0 +1,50 @@
+#pragma once
+// Options shared by fit, compare, diagnose and discover: which data, which
+// columns and units, what is held out, how to fit, where to write.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <string>
+
+#include "framework/discovery/data_source.hpp"
+#include "framework/discovery/diagnosis.hpp"
+#include "framework/discovery/model_fit.hpp"
+
+namespace hystbench::cli {
+
+struct DataOptions {
+  std::string data, columns, input_unit, output_unit, holdout = "auto";
+  DataSource source() const;
+  HoldoutSpec holdout_spec() const { return HoldoutSpec::parse(holdout); }
+};
+// --data (required), --columns, --input-unit, --output-unit; --holdout when
+// `with_holdout`.
+void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
+
+struct FitCliOptions {
+  std::string optimizer = "cmaes", optimizer_params = "{}", local = "LN_BOBYQA";
+  long evaluations = 0, local_evaluations = 0;
+  int restarts = 3, substeps = 0;
+  std::uint64_t seed = 1;
+  // Validated (bad optimizer, parameters or local method -> InputError).
+  FitOptions fit_options() const;
+};
+void add_fit_options(CLI::App* cmd, FitCliOptions& o);
+
+// The significance rule of diagnose and discover, and which effects to try.
+struct DiagnoseCliOptions {
+  std::string candidates;  // comma-separated; empty = the whole catalog
+  double bic_threshold = -10.0, heldout_gain = 0.01;
+  DiagnoseOptions diagnose_options(FitOptions fit, const DataSource& source) const;
+};
+void add_diagnose_options(CLI::App* cmd, DiagnoseCliOptions& o);
+
+// --out DIR and --force.
+struct OutputOptions {
+  std::string out;
+  bool force = false;
+  // Creates the folder; refuses to overwrite `marker` there without --force.
+  std::filesystem::path prepare(const std::string& marker) const;
+};
+void add_output_options(CLI::App* cmd, OutputOptions& o);
+
+}  // namespace hystbench::cli

@@ -1,0 +1,120 @@
+#include "framework/discovery/diagnosis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "framework/discovery/comparison.hpp"
+#include "framework/discovery/evidence.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/discovery/model_comparison.hpp"
+
+namespace hystbench {
+namespace {
+
+std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOptions& o) {
+  if (!o.candidates.empty()) return o.candidates;
+  std::vector<std::string> out;
+  for (const auto* info : EffectRegistry::instance().all())
+    if (!model.has(info->name)) out.push_back(info->name);
+  return out;
+}
+
+ComparisonInput current_comparison(const Model& model, const Eigen::VectorXd& x,
+                                   const ModelData& data, const DiagnoseOptions& o) {
+  Eigen::VectorXd y;
+  if (!simulate_physical(model, x, data, y)) y = Eigen::VectorXd::Zero(data.size());
+  return comparison_input(data, std::move(y), o.u_unit, o.y_unit);
+}
+
+Candidate try_candidate(const std::string& effect, const Diagnosis& current, const ModelData& data,
+                        const DiagnoseOptions& o) {
+  const Model extended = current.model.with(effect);
+  const Eigen::VectorXd x0 = extended.carry_over(current.model, current.x);
+  const auto fresh = extended.parameters_of(effect);
+  const FitResult r = refit_warm(extended, data, x0, fresh, o.fit);
+  Candidate c{effect, extended, r.x, fit_errors(extended, r.x, data)};
+  c.delta_k = extended.dimension() - current.model.dimension();
+  const long n = current.errors.n_estimation;
+  c.delta_bic = bic(c.after.sse, n, extended.dimension()) - current.bic;
+  const bool heldout_ok = current.errors.n_heldout == 0 ||
+                          c.after.rmse_heldout <= (1.0 - o.heldout_gain) * current.errors.rmse_heldout;
+  c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
+  c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
+                                 current.where.value("signatures", nlohmann::json::object()),
+                                 current.errors, c.after, c.delta_bic, o.y_unit);
+  return c;
+}
+
+}  // namespace
+
+double bic(double sse, long n, int k) {
+  return double(n) * std::log(std::max(sse, 1e-300) / double(n)) + double(k) * std::log(double(n));
+}
+
+nlohmann::json DiagnoseOptions::to_json() const {
+  return {{"fit", fit.to_json()},
+          {"candidates", candidates},
+          {"bic_threshold", bic_threshold},
+          {"heldout_gain", heldout_gain}};
+}
+
+const Candidate* Diagnosis::winner() const {
+  if (verdict == "none") return nullptr;
+  for (const auto& c : candidates)
+    if (c.effect == verdict) return &c;
+  return nullptr;
+}
+
+Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                   const DiagnoseOptions& o) {
+  if (o.fit.status) o.fit.status("polishing " + model.text());
+  const FitResult polished = refit_warm(model, data, x, {}, o.fit);
+  Diagnosis d{polished.model, polished.x, fit_errors(polished.model, polished.x, data)};
+  d.bic = bic(d.errors.sse, d.errors.n_estimation, model.dimension());
+  d.where = compare_signals(current_comparison(d.model, d.x, data, o));
+  d.options = o.to_json();
+  const auto effects = candidate_effects(model, o);
+  std::vector<std::optional<Candidate>> tried(effects.size());
+  long done = 0;
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t i = 0; i < effects.size(); ++i) {
+    tried[i] = try_candidate(effects[i], d, data, o);
+#pragma omp critical(diagnosis_status)
+    if (o.fit.status)
+      o.fit.status("candidates " + std::to_string(++done) + "/" + std::to_string(effects.size()) +
+                   " (" + effects[i] + " done)");
+  }
+  for (auto& c : tried) d.candidates.push_back(std::move(*c));
+  std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.significant != b.significant) return a.significant;
+    return a.delta_bic < b.delta_bic;
+  });
+  d.verdict = !d.candidates.empty() && d.candidates.front().significant ? d.candidates.front().effect
+                                                                        : "none";
+  return d;
+}
+
+nlohmann::json Diagnosis::to_json() const {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& c : candidates)
+    list.push_back({{"effect", c.effect},
+                    {"model", c.model.text()},
+                    {"delta_k", c.delta_k},
+                    {"delta_bic", std::isfinite(c.delta_bic) ? nlohmann::json(c.delta_bic) : nlohmann::json()},
+                    {"significant", c.significant},
+                    {"rmse_before", errors.rmse_estimation},
+                    {"rmse_after", c.after.to_json()["rmse"]},
+                    {"heldout_rmse_before", errors.n_heldout ? nlohmann::json(errors.rmse_heldout) : nlohmann::json()},
+                    {"heldout_rmse_after", c.after.to_json()["heldout_rmse"]},
+                    {"evidence", c.evidence}});
+  return {{"verdict", verdict},
+          {"model", model.text()},
+          {"errors", errors.to_json()},
+          {"bic", bic},
+          {"candidates", list},
+          {"where", where},
+          {"options", options}};
+}
+
+}  // namespace hystbench

@@ -1,0 +1,203 @@
+#include "framework/discovery/diagnosis_report.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "framework/discovery/comparison_report.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/discovery/model_comparison.hpp"
+#include "framework/io/atomic_file.hpp"
+#include "framework/report/figures.hpp"
+#include "framework/report/provenance.hpp"
+#include "framework/report/gnuplot_script.hpp"
+#include "framework/report/markdown.hpp"
+
+namespace hystbench {
+namespace {
+
+using markdown::num;
+
+std::string unit_suffix(const std::string& y_unit) { return y_unit.empty() ? "" : " " + y_unit; }
+
+double number(const nlohmann::json& j, const char* key) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
+}
+
+// The group of a breakdown list with the largest RMSE, as "label (RMSE x)".
+std::string worst_of(const nlohmann::json& list, const std::string& label_key,
+                     const std::string& unit) {
+  const nlohmann::json* worst = nullptr;
+  for (const auto& g : list)
+    if (std::isfinite(number(g, "rmse")) && (!worst || number(g, "rmse") > number(*worst, "rmse")))
+      worst = &g;
+  if (!worst) return "";
+  const auto& label = (*worst)[label_key];
+  return (label.is_string() ? label.get<std::string>() : label.dump()) + " (RMSE " +
+         num((*worst)["rmse"]) + unit + ")";
+}
+
+std::string worst_groups(const nlohmann::json& where, const std::string& unit) {
+  std::string out;
+  const std::string segment = worst_of(where.value("by_segment", nlohmann::json::array()), "segment", unit);
+  if (!segment.empty()) out += "- worst segment: " + segment + "\n";
+  nlohmann::json bins = nlohmann::json::array();
+  for (const auto& b : where.value("by_amplitude", nlohmann::json::array())) {
+    auto labelled = b;
+    labelled["label"] = "|u − ū| " + num(b["u_low"]) + "…" + num(b["u_high"]);
+    bins.push_back(labelled);
+  }
+  const std::string amplitude = worst_of(bins, "label", unit);
+  if (!amplitude.empty()) out += "- worst input-amplitude bin: " + amplitude + "\n";
+  nlohmann::json branches = nlohmann::json::array();
+  for (const auto& [name, m] : where.value("by_branch", nlohmann::json::object()).items()) {
+    auto labelled = m;
+    labelled["label"] = name;
+    branches.push_back(labelled);
+  }
+  const std::string branch = worst_of(branches, "label", unit);
+  if (!branch.empty()) out += "- worst branch: " + branch + "\n";
+  const std::string window = worst_of(where.value("by_time", nlohmann::json::array()), "window", unit);
+  if (!window.empty()) out += "- worst time window: " + window + "\n";
+  return out.empty() ? out : out + "\n";
+}
+
+std::string verdict_section(const Diagnosis& d, const std::string& unit) {
+  std::ostringstream out;
+  out << "## Verdict\n\n";
+  const Candidate* w = d.winner();
+  if (!w) {
+    out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
+        << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "
+        << num(100.0 * d.options.value("heldout_gain", 0.01)) << " % lower).";
+    const auto& r = d.where.value("residual", nlohmann::json::object());
+    if (r.value("white", false))
+      out << " The residual is white: the model has nothing systematic left to find.";
+    else
+      out << " The residual is not white: something systematic is left that no catalog effect "
+             "captures; consider writing an effect of your own (README, \"Add your own effect\").";
+    out << "\n\n";
+    return out.str();
+  }
+  out << "**" << w->effect << "** is missing. Adding it lowers the RMSE from "
+      << num(d.errors.rmse_estimation) << " to " << num(w->after.rmse_estimation) << unit;
+  if (d.errors.n_heldout)
+    out << " on the estimation data and from " << num(d.errors.rmse_heldout) << " to "
+        << num(w->after.rmse_heldout) << unit << " on the held-out data";
+  out << " (ΔBIC = " << num(w->delta_bic) << ").\n\n" << w->evidence << "\n\n";
+  out << "Next: `--model " << w->model.text() << "` (its fit is in `extended_fit.json`).\n\n";
+  return out.str();
+}
+
+std::string where_section(const Diagnosis& d, const std::string& unit,
+                          const std::string& current_report) {
+  std::ostringstream out;
+  out << "## Where the current model fails\n\n";
+  out << "Model `" << d.model.text() << "`: RMSE " << num(d.errors.rmse_estimation) << unit
+      << " (estimation)";
+  if (d.errors.n_heldout) out << ", " << num(d.errors.rmse_heldout) << unit << " (held out)";
+  const auto& floor = d.where.value("noise_floor", nlohmann::json::object());
+  if (floor.contains("sigma")) out << "; estimated noise σ " << num(floor["sigma"]) << unit;
+  out << ".\n\n";
+  out << worst_groups(d.where, unit);
+  out << "Full breakdowns, residual tests and figures: [" << current_report << "](" << current_report
+      << ").\n\n";
+  return out.str();
+}
+
+std::string candidates_section(const Diagnosis& d, const std::string& unit) {
+  std::ostringstream out;
+  out << "## Candidates, best first\n\n";
+  out << markdown::header_row({"effect", "Δk", "ΔBIC", "RMSE after" + unit,
+                               "held-out RMSE after" + unit, "significant"});
+  for (const auto& c : d.candidates)
+    out << markdown::row({c.effect, std::to_string(c.delta_k), num(c.delta_bic),
+                          num(c.after.rmse_estimation),
+                          d.errors.n_heldout ? num(c.after.rmse_heldout) : "–",
+                          c.significant ? "yes" : "no"});
+  out << "\nEach candidate is the current model with one more effect, refitted from the current "
+         "fit (the new effect starts neutral, so it can only improve the estimation error). ΔBIC = "
+         "N ln(SSE_new/SSE_old) + Δk ln N over the N estimation samples.\n\n";
+  for (const auto& c : d.candidates) out << "- **" << c.effect << "**: " << c.evidence << "\n";
+  out << "\n![candidates](diagnosis_candidates.png)\n";
+  return out.str();
+}
+
+}  // namespace
+
+std::string diagnosis_markdown(const Diagnosis& d, const std::string& data_name,
+                               const std::string& y_unit, const std::string& current_report) {
+  const std::string unit = unit_suffix(y_unit);
+  return "# Diagnosis of `" + d.model.text() + "` on " + data_name + "\n\n" +
+         verdict_section(d, unit) + where_section(d, unit, current_report) +
+         candidates_section(d, unit);
+}
+
+std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, const Diagnosis& d,
+                                              const std::string& y_unit) {
+  std::ostringstream csv;
+  csv << "effect,rmse_after,heldout_rmse_after\n";
+  for (const auto& c : d.candidates)
+    csv << c.effect << "," << gnuplot::number(c.after.rmse_estimation) << ","
+        << gnuplot::number(c.after.rmse_heldout) << "\n";
+  write_file_atomic(dir / "diagnosis_candidates.csv", csv.str());
+  const double sigma =
+      d.where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
+  const std::string unit = y_unit.empty() ? "" : " [" + y_unit + "]";
+  std::ostringstream body;
+  body << "set datafile separator ','\nset style data histograms\n"
+       << "set style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
+       << "set xtics rotate by -35 noenhanced\nset key outside top center horizontal\n"
+       << "set grid ytics\nset logscale y\n"
+       << "set ylabel " << gnuplot::quoted("RMSE" + unit) << "\n"
+       << "set title " << gnuplot::quoted("Adding one effect to " + d.model.text()) << " noenhanced\n"
+       << "current = " << gnuplot::number(d.errors.rmse_estimation) << "\n"
+       << "sigma = " << gnuplot::number(sigma) << "\n"
+       << "plot 'diagnosis_candidates.csv' using 2:xtic(1) title 'estimation RMSE after', \\\n"
+       << "     '' using 3 title 'held-out RMSE after', \\\n"
+       << "     current with lines lw 2 dt 2 lc rgb 'black' title 'current model', \\\n"
+       << "     sigma with lines lw 2 dt 3 lc rgb '#808080' title 'noise floor σ'\n";
+  const std::string text =
+      gnuplot::header("diagnosis_candidates", "RMSE after adding each candidate effect",
+                      "diagnosis_candidates.csv") +
+      gnuplot::render_all_terminals("diagnosis_candidates", body.str());
+  return gnuplot::write_script(dir, "diagnosis_candidates", text);
+}
+
+std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& dir,
+                                                   const Diagnosis& d, const ModelData& data,
+                                                   const DataSource& source,
+                                                   const HoldoutSpec& holdout, std::string& note) {
+  namespace fs = std::filesystem;
+  fs::create_directories(dir);
+  const std::uint64_t seed = d.options["fit"].value("seed", std::uint64_t(1));
+  nlohmann::json j = d.to_json();
+  j["data"] = source.to_json();
+  j["holdout"] = holdout.text();
+  std::vector<fs::path> files{dir / "diagnosis.json", dir / "fit.json", dir / "report.md"};
+  write_file_atomic(dir / "fit.json",
+                    make_fit_record(d.model, d.x, data, source, holdout, seed).to_json().dump(2) + "\n");
+  if (const Candidate* w = d.winner()) {
+    files.push_back(dir / "extended_fit.json");
+    write_file_atomic(files.back(), make_fit_record(w->model, w->x, data, source, holdout, seed)
+                                            .to_json().dump(2) + "\n");
+  }
+  Eigen::VectorXd y;
+  if (!simulate_physical(d.model, d.x, data, y)) y = Eigen::VectorXd::Zero(data.size());
+  const auto current = write_comparison(dir / "current",
+                                        comparison_input(data, std::move(y), source.u_unit, source.y_unit),
+                                        d.where, "Current model " + d.model.text(), d.model.text());
+  files.insert(files.end(), current.begin(), current.end());
+  const auto script = write_candidates_figure(dir, d, source.y_unit);
+  files.push_back(script);
+  for (const auto& image : render_figures(dir, {script}, note)) files.push_back(image);
+  j["provenance"] = provenance(omp_get_max_threads(), seed);
+  write_file_atomic(dir / "diagnosis.json", j.dump(2) + "\n");
+  write_file_atomic(dir / "report.md",
+                    diagnosis_markdown(d, source.path, source.y_unit, "current/report.md"));
+  return files;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,37 @@
+#include "framework/discovery/fit_errors.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace hystbench {
+
+FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelData& data) {
+  FitErrors e;
+  e.n_estimation = data.estimation_count();
+  e.n_heldout = data.heldout_count();
+  Eigen::VectorXd y;
+  e.stable = model.simulate(x, data, y);
+  if (!e.stable) {
+    const double inf = std::numeric_limits<double>::infinity();
+    e.sse = e.rmse_estimation = e.rmse_heldout = inf;
+    return e;
+  }
+  const Eigen::ArrayXd sq = (data.y - y).array().square();
+  e.sse = (sq * data.estimation.array()).sum();
+  const double held = (sq * (1.0 - data.estimation.array())).sum();
+  e.rmse_estimation = std::sqrt(e.sse / double(e.n_estimation)) * data.scales.y;
+  e.rmse_heldout = e.n_heldout ? std::sqrt(held / double(e.n_heldout)) * data.scales.y : 0.0;
+  return e;
+}
+
+nlohmann::json FitErrors::to_json() const {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  nlohmann::json j = {{"stable", stable},
+                      {"estimation_samples", n_estimation},
+                      {"heldout_samples", n_heldout},
+                      {"rmse", num(rmse_estimation)},
+                      {"heldout_rmse", n_heldout ? num(rmse_heldout) : nlohmann::json()}};
+  return j;
+}
+
+}  // namespace hystbench

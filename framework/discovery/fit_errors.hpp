@@ -1,0 +1,22 @@
+#pragma once
+// The two numbers every discovery step is judged by: the RMSE on the samples
+// the fit used and on the held-out samples, in the units of y.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "framework/model/model.hpp"
+
+namespace hystbench {
+
+struct FitErrors {
+  bool stable = false;   // false: the model diverges on these data (errors are +inf)
+  double sse = 0.0;      // normalised estimation SSE: the fitness
+  long n_estimation = 0, n_heldout = 0;
+  double rmse_estimation = 0.0, rmse_heldout = 0.0;  // physical; held-out 0 when none
+
+  nlohmann::json to_json() const;
+};
+
+FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelData& data);
+
+}  // namespace hystbench

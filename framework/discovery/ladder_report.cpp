@@ -1,0 +1,150 @@
+#include "framework/discovery/ladder_report.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "framework/discovery/diagnosis_report.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/io/atomic_file.hpp"
+#include "framework/report/figures.hpp"
+#include "framework/report/gnuplot_script.hpp"
+#include "framework/report/markdown.hpp"
+#include "framework/report/provenance.hpp"
+
+namespace hystbench {
+namespace {
+
+using markdown::num;
+
+double estimated_sigma(const Ladder& ladder) {
+  const auto& floor = ladder.steps.back().where.value("noise_floor", nlohmann::json::object());
+  return floor.value("sigma", std::nan(""));
+}
+
+std::string step_label(const LadderStep& s) { return s.added.empty() ? "start" : "+" + s.added; }
+
+std::filesystem::path write_ladder_figure(const std::filesystem::path& dir, const Ladder& ladder,
+                                          const LadderContext& ctx) {
+  std::ostringstream csv;
+  csv << "step,label,rmse,heldout_rmse\n";
+  for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
+    const auto& s = ladder.steps[k];
+    csv << k << "," << step_label(s) << "," << gnuplot::number(s.errors.rmse_estimation) << ","
+        << gnuplot::number(s.errors.n_heldout ? s.errors.rmse_heldout : std::nan("")) << "\n";
+  }
+  write_file_atomic(dir / "ladder.csv", csv.str());
+  const std::string unit = ctx.source.y_unit.empty() ? "" : " [" + ctx.source.y_unit + "]";
+  std::ostringstream body;
+  body << "set datafile separator ','\nset key outside top center horizontal\nset grid\n"
+       << "set logscale y\nset xtics noenhanced\nset offsets 0.3, 0.3, 0, 0\n"
+       << "set xlabel 'effect added at each step'\n"
+       << "set ylabel " << gnuplot::quoted("RMSE" + unit) << "\n"
+       << "set title " << gnuplot::quoted("Discovery from " + ladder.steps.front().model.text())
+       << " noenhanced\n"
+       << "sigma = " << gnuplot::number(estimated_sigma(ladder)) << "\n"
+       << "truth = " << gnuplot::number(ctx.true_noise_sd.value_or(std::nan(""))) << "\n"
+       << "plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation RMSE', \\\n"
+       << "     '' using 1:4 with linespoints lw 2 pt 5 title 'held-out RMSE', \\\n"
+       << "     sigma with lines dt 2 lw 2 lc rgb '#808080' title 'estimated noise σ'"
+       << (ctx.true_noise_sd ? ", \\\n     truth with lines dt 3 lw 2 lc rgb 'black' title 'true noise σ'"
+                             : "")
+       << "\n";
+  const std::string text =
+      gnuplot::header("ladder", "the error falling as effects are added", "ladder.csv") +
+      gnuplot::render_all_terminals("ladder", body.str());
+  return gnuplot::write_script(dir, "ladder", text);
+}
+
+}  // namespace
+
+nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
+    const auto& s = ladder.steps[k];
+    const FitRecord r{s.model, s.x, ctx.data.scales, ctx.source, ctx.holdout};
+    nlohmann::json parameters = nlohmann::json::object(), units = nlohmann::json::object();
+    for (const auto& p : r.parameters_json()) {
+      parameters[p["name"].get<std::string>()] = p["value"];
+      units[p["name"].get<std::string>()] = p["unit"];
+    }
+    const auto e = s.errors.to_json();
+    steps.push_back({{"step", k},
+                     {"added", s.added},
+                     {"effects", s.model.effects()},
+                     {"model", s.model.text()},
+                     {"parameters", parameters},
+                     {"units", units},
+                     {"rmse", e["rmse"]},
+                     {"heldout_rmse", e["heldout_rmse"]},
+                     {"bic", s.bic},
+                     {"evidence", s.evidence},
+                     {"verdict", ladder.diagnoses[k].verdict}});
+  }
+  nlohmann::json j = {{"steps", steps},
+                      {"final_effects", ladder.final_effects()},
+                      {"final_model", ladder.steps.back().model.text()},
+                      {"stopped_by_limit", ladder.stopped_by_limit},
+                      {"noise_floor", {{"estimated_sigma", estimated_sigma(ladder)}}},
+                      {"data", ctx.source.to_json()},
+                      {"holdout", ctx.holdout.text()},
+                      {"options", ctx.options}};
+  if (ctx.true_noise_sd) j["noise_floor"]["true_sigma"] = *ctx.true_noise_sd;
+  if (!std::isfinite(estimated_sigma(ladder))) j["noise_floor"]["estimated_sigma"] = nullptr;
+  return j;
+}
+
+std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
+  const std::string unit = ctx.source.y_unit.empty() ? "" : " " + ctx.source.y_unit;
+  std::ostringstream out;
+  out << "# Discovery on " << ctx.source.path << "\n\n";
+  out << "Started from `" << ladder.steps.front().model.text() << "`, ended with `"
+      << ladder.steps.back().model.text() << "`"
+      << (ladder.stopped_by_limit ? " (stopped at the step limit, the last verdict still named an effect)"
+                                  : " (the last diagnosis found nothing significant to add)")
+      << ".\n\n";
+  out << markdown::header_row({"step", "added", "model", "k", "RMSE" + unit,
+                               "held-out RMSE" + unit, "BIC"});
+  for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
+    const auto& s = ladder.steps[k];
+    out << markdown::row({std::to_string(k), step_label(s), s.model.text(),
+                          std::to_string(s.model.dimension()), num(s.errors.rmse_estimation),
+                          s.errors.n_heldout ? num(s.errors.rmse_heldout) : "–", num(s.bic)});
+  }
+  out << "\nEstimated noise σ " << num(estimated_sigma(ladder)) << unit;
+  if (ctx.true_noise_sd) out << "; true noise σ " << num(*ctx.true_noise_sd) << unit;
+  out << ".\n\n![ladder](ladder.png)\n\n## Why each effect was added\n\n";
+  for (std::size_t k = 1; k < ladder.steps.size(); ++k)
+    out << k << ". **" << ladder.steps[k].added << "**: " << ladder.steps[k].evidence
+        << " ([diagnosis](step_" << k - 1 << "/report.md))\n";
+  out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
+      << ladder.steps.size() - 1 << "/report.md). Final fit: `fit.json` (use it with "
+      << "`hystbench compare`).\n";
+  return out.str();
+}
+
+std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir,
+                                                const Ladder& ladder, const LadderContext& ctx,
+                                                std::string& note) {
+  std::vector<std::filesystem::path> files;
+  for (std::size_t k = 0; k < ladder.diagnoses.size(); ++k) {
+    const auto step = write_diagnosis(dir / ("step_" + std::to_string(k)), ladder.diagnoses[k],
+                                      ctx.data, ctx.source, ctx.holdout, note);
+    files.insert(files.end(), step.begin(), step.end());
+  }
+  const auto& last = ladder.steps.back();
+  const std::uint64_t seed = ctx.options.value("fit", nlohmann::json::object()).value("seed", 1);
+  FitRecord final_fit = make_fit_record(last.model, last.x, ctx.data, ctx.source, ctx.holdout, seed);
+  write_file_atomic(dir / "fit.json", final_fit.to_json().dump(2) + "\n");
+  auto j = ladder_json(ladder, ctx);
+  j["provenance"] = provenance(omp_get_max_threads(), seed);
+  write_file_atomic(dir / "ladder.json", j.dump(2) + "\n");
+  write_file_atomic(dir / "ladder.md", ladder_markdown(ladder, ctx));
+  const auto script = write_ladder_figure(dir, ladder, ctx);
+  files.insert(files.end(), {dir / "fit.json", dir / "ladder.json", dir / "ladder.md", script});
+  for (const auto& image : render_figures(dir, {script}, note)) files.push_back(image);
+  return files;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,33 @@
+#pragma once
+// Writing a discovery ladder out: ladder.json, ladder.md, the figure of the
+// error falling step by step next to the noise floor, and each step's
+// diagnosis in step_K/.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framework/discovery/data_source.hpp"
+#include "framework/discovery/ladder.hpp"
+
+namespace hystbench {
+
+struct LadderContext {
+  const ModelData& data;
+  const DataSource& source;
+  const HoldoutSpec& holdout;
+  std::optional<double> true_noise_sd;  // from DATA.truth.json, when known
+  nlohmann::json options;
+};
+
+nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx);
+std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx);
+
+// Writes everything into `dir`; returns the files; sets `note` when figures
+// could not be rendered.
+std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir,
+                                                const Ladder& ladder, const LadderContext& ctx,
+                                                std::string& note);
+
+}  // namespace hystbench

@@ -1,0 +1,13 @@
+#pragma once
+// The comparison of a model's output with the data it was simulated on, in
+// physical units: the bridge from ModelData to compare_signals.
+#include "framework/discovery/comparison.hpp"
+#include "framework/model/model_data.hpp"
+
+namespace hystbench {
+
+// `y_model` in physical units (zeros when the model diverged).
+ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
+                                 const std::string& u_unit, const std::string& y_unit);
+
+}  // namespace hystbench

@@ -1,0 +1,128 @@
+#include "framework/discovery/model_fit.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "framework/core/error.hpp"
+#include "framework/core/registry.hpp"
+#include "framework/core/text.hpp"
+#include "framework/local/nlopt_search.hpp"
+#include "framework/local/polished_run.hpp"
+#include "framework/model/model_problem.hpp"
+
+namespace hystbench {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Budget evaluation_budget(long evaluations) {
+  Budget b;
+  b.evaluations = evaluations;
+  return b;
+}
+
+// Keeps the best point seen over several contexts.
+struct BestSoFar {
+  Eigen::VectorXd x;
+  double sse = std::numeric_limits<double>::infinity();
+  long evaluations = 0;
+  std::vector<double> start_sse;
+
+  void take(const EvaluationContext& ctx) {
+    evaluations += ctx.evaluations();
+    start_sse.push_back(ctx.best_value());
+    if (ctx.best_value() < sse) {
+      sse = ctx.best_value();
+      x = ctx.best_point();
+    }
+  }
+};
+
+void polish_from(const Problem& problem, const Eigen::VectorXd& x0, const FitOptions& o,
+                 std::uint64_t seed, BestSoFar& best) {
+  EvaluationContext ctx(problem, evaluation_budget(o.local_budget(problem.dimension()) + 1), seed);
+  ctx.evaluate(problem.bounds().clamp(x0));  // the start counts, so the result is never worse
+  NloptSearch local;
+  local.algorithm = o.local;
+  run_nlopt(ctx, local, ctx.best_point(), ctx.remaining_evaluations());
+  best.take(ctx);
+}
+
+void report(const FitOptions& o, const std::string& text) {
+  if (o.status) o.status(text);
+}
+
+}  // namespace
+
+long FitOptions::global_budget(int dimension) const {
+  return evaluations > 0 ? evaluations : std::max(4000L, 1000L * dimension);
+}
+
+long FitOptions::local_budget(int dimension) const {
+  return local_evaluations > 0 ? local_evaluations : std::max(1000L, 300L * dimension);
+}
+
+void FitOptions::validate() const {
+  make_optimizer(optimizer, optimizer_params, "--optimizer");
+  const auto& locals = nlopt_local_algorithms();
+  if (std::find(locals.begin(), locals.end(), local) == locals.end())
+    throw InputError("--local " + local + ": not a local NLopt method; use one of " +
+                     join(locals));
+  if (restarts < 0) throw InputError("--restarts must be 0 or more");
+}
+
+nlohmann::json FitOptions::to_json() const {
+  return {{"optimizer", optimizer},        {"optimizer_params", optimizer_params},
+          {"evaluations", evaluations},    {"restarts", restarts},
+          {"local", local},                {"local_evaluations", local_evaluations},
+          {"seed", seed}};
+}
+
+FitResult fit_model(const Model& model, const ModelData& data, const FitOptions& o,
+                    const Eigen::VectorXd* warm) {
+  const auto start = std::chrono::steady_clock::now();
+  ModelProblem problem(model, data);
+  const int dim = problem.dimension();
+  BestSoFar best;
+  if (warm) {
+    report(o, "polishing the warm start");
+    polish_from(problem, *warm, o, trial_seed(o.seed, "warm:" + model.text(), 0), best);
+  }
+  for (int r = 0; r < o.restarts; ++r) {
+    report(o, "restart " + std::to_string(r + 1) + "/" + std::to_string(o.restarts));
+    const long global = o.global_budget(dim);
+    EvaluationContext ctx(problem, evaluation_budget(global + o.local_budget(dim)),
+                          trial_seed(o.seed, "fit:" + model.text(), std::uint64_t(r)));
+    auto optimizer = make_optimizer(o.optimizer, o.optimizer_params, "--optimizer");
+    run_polished(*optimizer, global, o.local, ctx);
+    best.take(ctx);
+  }
+  if (best.x.size() == 0) best.x = model.neutral(), best.sse = problem.sse(best.x);
+  return {model, best.x, best.sse, best.evaluations, seconds_since(start), best.start_sse};
+}
+
+FitResult refit_warm(const Model& model, const ModelData& data, const Eigen::VectorXd& x0,
+                     const std::vector<int>& fresh, const FitOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  ModelProblem problem(model, data);
+  BestSoFar best;
+  Eigen::VectorXd from = x0;
+  if (!fresh.empty()) {
+    SubspaceProblem sub(problem, x0, fresh);
+    const long budget = 200 + 150L * long(fresh.size());
+    EvaluationContext ctx(sub, evaluation_budget(budget + 1),
+                          trial_seed(o.seed, "screen:" + model.text(), 0));
+    Eigen::VectorXd z0(fresh.size());
+    for (std::size_t i = 0; i < fresh.size(); ++i) z0[i] = x0[fresh[i]];
+    ctx.evaluate(z0);
+    make_optimizer("cmaes", nlohmann::json::object(), "screening")->run(ctx);
+    from = sub.expand(ctx.best_point());
+    best.evaluations += ctx.evaluations();
+  }
+  polish_from(problem, from, o, trial_seed(o.seed, "refit:" + model.text(), 0), best);
+  return {model, best.x, best.sse, best.evaluations, seconds_since(start), best.start_sse};
+}
+
+}  // namespace hystbench

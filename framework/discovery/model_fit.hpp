@@ -1,0 +1,58 @@
+#pragma once
+// Fitting a discovery model to a measurement: seeded global restarts, each
+// polished by an NLopt local method, best estimation SSE wins; and the warm
+// refit that diagnosis uses when it tries one more effect.
+//
+// Every evaluation goes through an EvaluationContext, so budgets and seeds
+// work as in benchmark trials; the held-out samples never enter a fitness.
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "framework/model/model.hpp"
+
+namespace hystbench {
+
+struct FitOptions {
+  std::string optimizer = "cmaes";  // any registered optimizer
+  nlohmann::json optimizer_params = nlohmann::json::object();
+  long evaluations = 0;  // global stage per restart; 0 = 1000 per parameter, at least 4000
+  int restarts = 3;      // global restarts (a warm start, when given, comes on top)
+  std::string local = "LN_BOBYQA";  // NLopt local method of the polish
+  long local_evaluations = 0;       // polish per start; 0 = 300 per parameter, at least 1000
+  std::uint64_t seed = 1;
+  // Called with a short status ("restart 2/3", ...); may be empty.
+  std::function<void(const std::string&)> status;
+
+  long global_budget(int dimension) const;
+  long local_budget(int dimension) const;
+  // Checks the optimizer name and parameters and the local method; throws
+  // InputError naming the bad option.
+  void validate() const;
+  nlohmann::json to_json() const;
+};
+
+struct FitResult {
+  Model model;
+  Eigen::VectorXd x;  // normalised parameters
+  double sse = 0.0;   // normalised estimation SSE
+  long evaluations = 0;
+  double seconds = 0.0;
+  std::vector<double> start_sse;  // best SSE of every start, in order
+};
+
+// Global fit with restarts. `warm` (optional) is one more start, polished
+// locally before the global restarts.
+FitResult fit_model(const Model& model, const ModelData& data, const FitOptions& options,
+                    const Eigen::VectorXd* warm = nullptr);
+
+// Refit of `model` from `x0` in which the parameters `fresh` (a newly added
+// effect, at its neutral value in x0) are first searched globally with the
+// others held, then everything is polished. Never worse than x0.
+FitResult refit_warm(const Model& model, const ModelData& data, const Eigen::VectorXd& x0,
+                     const std::vector<int>& fresh, const FitOptions& options);
+
+}  // namespace hystbench

@@ -1,0 +1,141 @@
+#include "framework/model/holdout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
+
+namespace hystbench {
+namespace {
+
+struct SegmentSpan {
+  std::string label;
+  Eigen::Index begin = 0, end = 0;  // [begin, end), first occurrence onwards
+  double frequency = 0.0;           // dominant input frequency, Hz
+};
+
+double zero_crossing_frequency(const ModelData& d, Eigen::Index begin, Eigen::Index end) {
+  const auto n = end - begin;
+  if (n < 2) return 0.0;
+  const double mean = d.u.segment(begin, n).mean();
+  long crossings = 0;
+  for (Eigen::Index k = begin + 1; k < end; ++k)
+    if ((d.u[k - 1] - mean) * (d.u[k] - mean) < 0.0) ++crossings;
+  return crossings / (2.0 * double(n) * d.sample_time);
+}
+
+// Contiguous runs of equal labels, in time order.
+std::vector<SegmentSpan> segment_spans(const ModelData& d) {
+  std::vector<SegmentSpan> spans;
+  for (Eigen::Index k = 0; k < d.size(); ++k) {
+    if (spans.empty() || spans.back().label != d.segment[k])
+      spans.push_back({d.segment[k], k, k});
+    spans.back().end = k + 1;
+  }
+  for (auto& s : spans) s.frequency = zero_crossing_frequency(d, s.begin, s.end);
+  return spans;
+}
+
+void hold_out_tail(ModelData& d, Eigen::Index begin, Eigen::Index end, double fraction) {
+  const auto n = end - begin;
+  const auto held = static_cast<Eigen::Index>(std::floor(fraction * double(n)));
+  d.estimation.segment(end - held, held).setZero();
+}
+
+void auto_holdout(ModelData& d) {
+  if (d.segment.empty()) return hold_out_tail(d, 0, d.size(), 0.25);
+  const auto spans = segment_spans(d);
+  const auto n = spans.size();
+  if (n < 4) {
+    for (const auto& s : spans) hold_out_tail(d, s.begin, s.end, 0.25);
+    return;
+  }
+  std::vector<std::size_t> rank(n);
+  for (std::size_t i = 0; i < n; ++i) rank[i] = i;
+  std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) {
+    return spans[a].frequency < spans[b].frequency;
+  });
+  const std::size_t m = std::max<std::size_t>(1, std::lround(double(n) / 4.0));
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto r = static_cast<std::size_t>((double(i) + 0.5) * double(n) / double(m));
+    const auto& s = spans[rank[std::min(r, n - 2)]];
+    d.estimation.segment(s.begin, s.end - s.begin).setZero();
+  }
+}
+
+}  // namespace
+
+HoldoutSpec HoldoutSpec::parse(const std::string& text, const std::string& where) {
+  const std::string forms = "auto, none, last:FRACTION (e.g. last:0.25) or segments:LABEL,LABEL";
+  HoldoutSpec s;
+  const auto colon = text.find(':');
+  const std::string head = text.substr(0, colon);
+  const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  if (text == "auto") return s;
+  if (text == "none") {
+    s.mode = Mode::None;
+    return s;
+  }
+  if (head == "last") {
+    s.mode = Mode::Last;
+    try {
+      std::size_t used = 0;
+      s.fraction = std::stod(rest, &used);
+      if (used != rest.size()) throw std::invalid_argument(rest);
+    } catch (const std::exception&) {
+      throw InputError(where + " " + text + ": expected a number after 'last:'");
+    }
+    if (!(s.fraction > 0.0 && s.fraction < 1.0))
+      throw InputError(where + " " + text + ": the fraction must lie strictly between 0 and 1");
+    return s;
+  }
+  if (head == "segments" && !rest.empty()) {
+    s.mode = Mode::Segments;
+    std::string item;
+    for (std::size_t i = 0; i <= rest.size(); ++i) {
+      if (i == rest.size() || rest[i] == ',') {
+        if (!item.empty()) s.segments.push_back(item);
+        item.clear();
+      } else {
+        item += rest[i];
+      }
+    }
+    return s;
+  }
+  throw InputError(where + " " + text + ": not a hold-out; use " + forms);
+}
+
+std::string HoldoutSpec::text() const {
+  switch (mode) {
+    case Mode::Auto: return "auto";
+    case Mode::None: return "none";
+    case Mode::Last: return "last:" + number_text(fraction);
+    case Mode::Segments: return "segments:" + join(segments, ",");
+  }
+  return "auto";
+}
+
+void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
+  d.estimation.setOnes(d.size());
+  switch (spec.mode) {
+    case HoldoutSpec::Mode::None: break;
+    case HoldoutSpec::Mode::Auto: auto_holdout(d); break;
+    case HoldoutSpec::Mode::Last: hold_out_tail(d, 0, d.size(), spec.fraction); break;
+    case HoldoutSpec::Mode::Segments:
+      if (d.segment.empty())
+        throw InputError("--holdout " + spec.text() + ": the data have no segment column");
+      for (const auto& label : spec.segments) {
+        bool found = false;
+        for (Eigen::Index k = 0; k < d.size(); ++k)
+          if (d.segment[k] == label) d.estimation[k] = 0.0, found = true;
+        if (!found) throw InputError("--holdout: no segment '" + label + "' in the data");
+      }
+      break;
+  }
+  if (d.estimation_count() < 2)
+    throw InputError("--holdout " + spec.text() + ": leaves fewer than two samples to fit");
+}
+
+}  // namespace hystbench
