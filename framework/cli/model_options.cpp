@@ -29,38 +29,32 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
 }
 
 FitOptions FitCliOptions::fit_options() const {
-  FitOptions f;
-  f.optimizer = optimizer;
+  FitOptions f = fit;
   try {
     f.optimizer_params = nlohmann::json::parse(optimizer_params);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError("--optimizer-params: not valid JSON: " + std::string(e.what()));
   }
-  f.evaluations = evaluations;
-  f.restarts = restarts;
-  f.local = local;
-  f.local_evaluations = local_evaluations;
-  f.seed = seed;
   f.validate();
   return f;
 }
 
 void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
-  cmd->add_option("--optimizer", o.optimizer, "global optimizer (see `hystbench list`)")
+  cmd->add_option("--optimizer", o.fit.optimizer, "global optimizer (see `hystbench list`)")
       ->capture_default_str();
   cmd->add_option("--optimizer-params", o.optimizer_params,
                   "its parameters as JSON, e.g. '{\"restarts\": \"none\"}'")
       ->capture_default_str();
-  cmd->add_option("--evaluations", o.evaluations,
-                  "global evaluations per restart (0: 1000 per parameter, at least 4000)")
+  cmd->add_option("--evaluations", o.fit.evaluations,
+                  "global evaluations per restart (0: 2500 per parameter, at least 10000)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--restarts", o.restarts, "seeded global restarts")
+  cmd->add_option("--restarts", o.fit.restarts, "seeded global restarts")
       ->capture_default_str()->check(CLI::Range(0, 1000));
-  cmd->add_option("--local", o.local, "NLopt local method of the polish")->capture_default_str();
-  cmd->add_option("--local-evaluations", o.local_evaluations,
+  cmd->add_option("--local", o.fit.local, "NLopt local method of the polish")->capture_default_str();
+  cmd->add_option("--local-evaluations", o.fit.local_evaluations,
                   "polish evaluations per start (0: 300 per parameter, at least 1000)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", o.seed, "seed of every random choice")->capture_default_str();
+  cmd->add_option("--seed", o.fit.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--substeps", o.substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(CLI::Range(0, 1000));

@@ -21,10 +21,9 @@ struct DataOptions {
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
 
 struct FitCliOptions {
-  std::string optimizer = "cmaes", optimizer_params = "{}", local = "LN_BOBYQA";
-  long evaluations = 0, local_evaluations = 0;
-  int restarts = 3, substeps = 0;
-  std::uint64_t seed = 1;
+  FitOptions fit;  // the library's defaults are the command line's
+  std::string optimizer_params = "{}";
+  int substeps = 0;
   // Validated (bad optimizer, parameters or local method -> InputError).
   FitOptions fit_options() const;
 };

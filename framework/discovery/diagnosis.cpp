@@ -42,7 +42,7 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
   c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
                                  current.where.value("signatures", nlohmann::json::object()),
-                                 current.errors, c.after, c.delta_bic, o.y_unit);
+                                 current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   return c;
 }
 

@@ -57,7 +57,7 @@ std::string statistic_text(const std::string& effect, const nlohmann::json& s) {
 
 std::string evidence_sentence(const EffectInfo& effect, const nlohmann::json& signatures,
                               const FitErrors& before, const FitErrors& after, double delta_bic,
-                              const std::string& y_unit) {
+                              bool significant, const std::string& y_unit) {
   const std::string unit = y_unit.empty() ? "" : " " + y_unit;
   std::string s = "Adding " + effect.name + " (" + effect.summary + ") changes the RMSE from " +
                   fmt("%.4g", before.rmse_estimation) + " to " +
@@ -65,7 +65,9 @@ std::string evidence_sentence(const EffectInfo& effect, const nlohmann::json& si
   if (before.n_heldout)
     s += " (held out: " + fmt("%.4g", before.rmse_heldout) + " to " +
          fmt("%.4g", after.rmse_heldout) + unit + ")";
-  s += ", ΔBIC = " + fmt("%.1f", delta_bic) + ". It helps because " + effect.signature;
+  s += ", ΔBIC = " + fmt("%.1f", delta_bic) + ". " +
+       (significant ? "It helps because " : "Not significant; its signature would be that ") +
+       effect.signature;
   const std::string statistic = statistic_text(effect.name, signatures);
   if (!statistic.empty()) s += "; here " + statistic;
   return s + ".";

@@ -10,11 +10,13 @@
 
 namespace hystbench {
 
-// `signatures`: the "signatures" object of compare_signals for the current
+// `significant` says whether the candidate passed the diagnosis rule: the
+// signature is then given as the reason it helps, otherwise as what would
+// have pointed at it. `signatures`: the "signatures" object of compare_signals for the current
 // fit. Effects without a statistic of their own (user plugins) are
 // explained by their signature sentence and the error change alone.
 std::string evidence_sentence(const EffectInfo& effect, const nlohmann::json& signatures,
                               const FitErrors& before, const FitErrors& after, double delta_bic,
-                              const std::string& y_unit);
+                              bool significant, const std::string& y_unit);
 
 }  // namespace hystbench

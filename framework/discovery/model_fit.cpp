@@ -46,6 +46,10 @@ void polish_from(const Problem& problem, const Eigen::VectorXd& x0, const FitOpt
   ctx.evaluate(problem.bounds().clamp(x0));  // the start counts, so the result is never worse
   NloptSearch local;
   local.algorithm = o.local;
+  // Converged well below what any model comparison resolves (a candidate
+  // must lower the SSE by a fraction of a percent to count).
+  local.ftol_rel = 1e-9;
+  local.xtol_rel = 1e-8;
   run_nlopt(ctx, local, ctx.best_point(), ctx.remaining_evaluations());
   best.take(ctx);
 }
@@ -57,7 +61,7 @@ void report(const FitOptions& o, const std::string& text) {
 }  // namespace
 
 long FitOptions::global_budget(int dimension) const {
-  return evaluations > 0 ? evaluations : std::max(4000L, 1000L * dimension);
+  return evaluations > 0 ? evaluations : std::max(10000L, 2500L * dimension);
 }
 
 long FitOptions::local_budget(int dimension) const {
@@ -110,7 +114,12 @@ FitResult refit_warm(const Model& model, const ModelData& data, const Eigen::Vec
   BestSoFar best;
   Eigen::VectorXd from = x0;
   if (!fresh.empty()) {
-    SubspaceProblem sub(problem, x0, fresh);
+    // The search for the new effect's parameters may integrate ODE effects
+    // coarsely: the polish that follows uses the model's own sub-steps.
+    Model coarse = model;
+    if (o.screening_substeps > 0) coarse.set_substeps(o.screening_substeps);
+    ModelProblem coarse_problem(coarse, data);
+    SubspaceProblem sub(coarse_problem, x0, fresh);
     const long budget = 200 + 150L * long(fresh.size());
     EvaluationContext ctx(sub, evaluation_budget(budget + 1),
                           trial_seed(o.seed, "screen:" + model.text(), 0));
