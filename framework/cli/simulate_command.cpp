@@ -100,7 +100,11 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--input-unit", o->input_unit, "unit of u, recorded for figure axes (e.g. V)");
   cmd->add_option("--output-unit", o->output_unit, "unit of y, recorded for figure axes (e.g. µm)");
   cmd->add_option("--out", o->out, "output CSV (the truth file is written beside it)")->required();
-  return [o] { simulate(*o); };
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, load_plugins] {
+    load_plugins();
+    simulate(*o);
+  };
 }
 
 }  // namespace hystbench::cli
