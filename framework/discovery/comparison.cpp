@@ -90,21 +90,28 @@ nlohmann::json noise_json(const NoiseFloor& f, const nlohmann::json& all,
 
 }  // namespace
 
+nlohmann::json part_metrics(const ComparisonInput& in) {
+  check_lengths(in);
+  const auto mask = estimation_mask(in);
+  std::vector<Eigen::Index> estimation, heldout;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    (mask[i] ? estimation : heldout).push_back(Eigen::Index(i));
+  nlohmann::json out;
+  out["all"] = to_json(error_metrics(in.y, in.y_model));
+  out["estimation"] = to_json(error_metrics(in.y, in.y_model, estimation));
+  if (!heldout.empty()) out["heldout"] = to_json(error_metrics(in.y, in.y_model, heldout));
+  return out;
+}
+
 nlohmann::json compare_signals(const ComparisonInput& in) {
   check_lengths(in);
   const double ts = sample_time(in);
   const auto mask = estimation_mask(in);
   const BreakdownInput parts{in.t, in.u, in.y, in.y_model, in.segment, mask};
 
-  std::vector<Eigen::Index> estimation, heldout;
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    (mask[i] ? estimation : heldout).push_back(Eigen::Index(i));
-  nlohmann::json out;
+  nlohmann::json out = part_metrics(in);
   out["n"] = in.t.size();
   out["sample_time"] = finite_or_null(ts);
-  out["all"] = to_json(error_metrics(in.y, in.y_model));
-  out["estimation"] = to_json(error_metrics(in.y, in.y_model, estimation));
-  if (!heldout.empty()) out["heldout"] = to_json(error_metrics(in.y, in.y_model, heldout));
 
   out["by_segment"] = by_segment(parts);
   out["by_amplitude"] = by_amplitude(parts);

@@ -43,6 +43,10 @@ struct ComparisonInput {
 // Throws std::invalid_argument when the lengths differ.
 nlohmann::json compare_signals(const ComparisonInput& in);
 
+// Only the metrics of the parts: {"all", "estimation", "heldout"} (the
+// last absent when nothing is held out), as in compare_signals.
+nlohmann::json part_metrics(const ComparisonInput& in);
+
 constexpr int kCorrelationLags = 25;
 constexpr int kLjungBoxLags = 20;
 constexpr double kWhitenessLevel = 0.01;

@@ -27,12 +27,40 @@ ComparisonInput current_comparison(const Model& model, const Eigen::VectorXd& x,
   return comparison_input(data, std::move(y), o.u_unit, o.y_unit);
 }
 
+// Linear blocks in series trade a resonance among themselves (a fitted
+// chain often splits it between msd and arx), so a new dynamics effect also
+// gets a start in which the other dynamics effects pass the signal through
+// and it has to explain the dynamics alone.
+std::optional<Eigen::VectorXd> dynamics_reset_start(const Model& extended, const std::string& effect,
+                                                    Eigen::VectorXd x0) {
+  const auto& registry = EffectRegistry::instance();
+  if (registry.find(effect, "effect").stage != EffectStage::Dynamics) return std::nullopt;
+  const Eigen::VectorXd neutral = extended.neutral();
+  bool changed = false;
+  for (const auto& other : extended.effects()) {
+    if (other == effect || registry.find(other, "effect").stage != EffectStage::Dynamics) continue;
+    for (int i : extended.parameters_of(other)) x0[i] = neutral[i];
+    changed = true;
+  }
+  return changed ? std::optional<Eigen::VectorXd>(x0) : std::nullopt;
+}
+
+FitResult refit_candidate(const Model& extended, const std::string& effect, const Diagnosis& current,
+                          const ModelData& data, const DiagnoseOptions& o) {
+  const Eigen::VectorXd x0 = extended.carry_over(current.model, current.x);
+  const auto fresh = extended.parameters_of(effect);
+  FitResult best = refit_warm(extended, data, x0, fresh, o.fit);
+  if (const auto reset = dynamics_reset_start(extended, effect, x0)) {
+    FitResult other = refit_warm(extended, data, *reset, fresh, o.fit);
+    if (other.sse < best.sse) best = std::move(other);
+  }
+  return best;
+}
+
 Candidate try_candidate(const std::string& effect, const Diagnosis& current, const ModelData& data,
                         const DiagnoseOptions& o) {
   const Model extended = current.model.with(effect);
-  const Eigen::VectorXd x0 = extended.carry_over(current.model, current.x);
-  const auto fresh = extended.parameters_of(effect);
-  const FitResult r = refit_warm(extended, data, x0, fresh, o.fit);
+  const FitResult r = refit_candidate(extended, effect, current, data, o);
   Candidate c{effect, extended, r.x, fit_errors(extended, r.x, data)};
   c.delta_k = extended.dimension() - current.model.dimension();
   const long n = current.errors.n_estimation;

@@ -6,6 +6,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/discovery/fit_errors.hpp"
+#include "framework/discovery/model_comparison.hpp"
 #include "framework/report/provenance.hpp"
 
 namespace hystbench {
@@ -86,7 +87,7 @@ FitRecord FitRecord::read(const std::filesystem::path& path) {
   }
   for (std::size_t i = 0; i < names.size(); ++i)
     if (!seen[i]) throw InputError(where + ": missing parameter '" + names[i] + "'");
-  for (const auto& key : {"errors", "fit", "seed", "provenance"})
+  for (const auto& key : {"errors", "metrics", "fit", "seed", "provenance"})
     if (j.contains(key)) r.details[key] = j[key];
   return r;
 }
@@ -94,7 +95,11 @@ FitRecord FitRecord::read(const std::filesystem::path& path) {
 FitRecord make_fit_record(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
                           const DataSource& source, const HoldoutSpec& holdout, std::uint64_t seed) {
   FitRecord r{model, x, data.scales, source, holdout};
+  Eigen::VectorXd y;
+  const bool stable = simulate_physical(model, x, data, y);
   r.details = {{"errors", fit_errors(model, x, data).to_json()},
+               {"metrics", stable ? part_metrics(comparison_input(data, y, source.u_unit, source.y_unit))
+                                  : nlohmann::json()},
                {"seed", seed},
                {"provenance", provenance(omp_get_max_threads(), seed)}};
   return r;

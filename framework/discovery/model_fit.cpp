@@ -40,9 +40,12 @@ struct BestSoFar {
   }
 };
 
+// A local search from x0. `fallback` (optional) is evaluated too, so the
+// result is never worse than it either.
 void polish_from(const Problem& problem, const Eigen::VectorXd& x0, const FitOptions& o,
-                 std::uint64_t seed, BestSoFar& best) {
-  EvaluationContext ctx(problem, evaluation_budget(o.local_budget(problem.dimension()) + 1), seed);
+                 std::uint64_t seed, BestSoFar& best, const Eigen::VectorXd* fallback = nullptr) {
+  EvaluationContext ctx(problem, evaluation_budget(o.local_budget(problem.dimension()) + 2), seed);
+  if (fallback) ctx.evaluate(problem.bounds().clamp(*fallback));
   ctx.evaluate(problem.bounds().clamp(x0));  // the start counts, so the result is never worse
   NloptSearch local;
   local.algorithm = o.local;
@@ -56,6 +59,29 @@ void polish_from(const Problem& problem, const Eigen::VectorXd& x0, const FitOpt
 
 void report(const FitOptions& o, const std::string& text) {
   if (o.status) o.status(text);
+}
+
+// The global search for a newly added effect's parameters, the others held
+// at x0. It may run on the first part of the record and integrate ODE
+// effects coarsely: the polish that follows uses the whole record and the
+// model's own sub-steps. Starts from x0 itself, so it is never worse.
+FitResult screen_new_effect(const Model& model, const ModelData& data, const Eigen::VectorXd& x0,
+                            const std::vector<int>& fresh, const FitOptions& o) {
+  Model coarse = model;
+  if (o.screening_substeps > 0) coarse.set_substeps(o.screening_substeps);
+  const ModelData part = o.screening_samples > 0 && o.screening_samples < data.size()
+                             ? data.head(o.screening_samples)
+                             : data;
+  ModelProblem coarse_problem(coarse, part);
+  SubspaceProblem sub(coarse_problem, x0, fresh);
+  const long budget = std::max(1000L, o.screening_per_parameter * long(fresh.size()));
+  EvaluationContext ctx(sub, evaluation_budget(budget + 1),
+                        trial_seed(o.seed, "screen:" + model.text(), 0));
+  Eigen::VectorXd z0(fresh.size());
+  for (std::size_t i = 0; i < fresh.size(); ++i) z0[i] = x0[fresh[i]];
+  ctx.evaluate(z0);
+  make_optimizer(o.optimizer, o.optimizer_params, "--optimizer")->run(ctx);
+  return {model, sub.expand(ctx.best_point()), ctx.best_value(), ctx.evaluations(), 0.0, {}};
 }
 
 }  // namespace
@@ -114,23 +140,12 @@ FitResult refit_warm(const Model& model, const ModelData& data, const Eigen::Vec
   BestSoFar best;
   Eigen::VectorXd from = x0;
   if (!fresh.empty()) {
-    // The search for the new effect's parameters may integrate ODE effects
-    // coarsely: the polish that follows uses the model's own sub-steps.
-    Model coarse = model;
-    if (o.screening_substeps > 0) coarse.set_substeps(o.screening_substeps);
-    ModelProblem coarse_problem(coarse, data);
-    SubspaceProblem sub(coarse_problem, x0, fresh);
-    const long budget = 200 + 150L * long(fresh.size());
-    EvaluationContext ctx(sub, evaluation_budget(budget + 1),
-                          trial_seed(o.seed, "screen:" + model.text(), 0));
-    Eigen::VectorXd z0(fresh.size());
-    for (std::size_t i = 0; i < fresh.size(); ++i) z0[i] = x0[fresh[i]];
-    ctx.evaluate(z0);
-    make_optimizer("cmaes", nlohmann::json::object(), "screening")->run(ctx);
-    from = sub.expand(ctx.best_point());
-    best.evaluations += ctx.evaluations();
+    const FitResult screened = screen_new_effect(model, data, x0, fresh, o);
+    from = screened.x;
+    best.evaluations += screened.evaluations;
   }
-  polish_from(problem, from, o, trial_seed(o.seed, "refit:" + model.text(), 0), best);
+  // The screening may have judged on part of the record: x0 stays a candidate.
+  polish_from(problem, from, o, trial_seed(o.seed, "refit:" + model.text(), 0), best, &x0);
   return {model, best.x, best.sse, best.evaluations, seconds_since(start), best.start_sse};
 }
 

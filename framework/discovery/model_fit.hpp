@@ -27,9 +27,12 @@ struct FitOptions {
   std::string local = "LN_BOBYQA";  // NLopt local method of the polish
   long local_evaluations = 0;       // polish per start; 0 = 300 per parameter, at least 1000
   std::uint64_t seed = 1;
-  // Integration sub-steps of ODE effects while a new effect's parameters are
-  // searched in a warm refit (0: the model's own).
+  // The global search of a new effect's parameters in a warm refit:
+  // evaluations per new parameter (at least 1000 in all), ODE sub-steps
+  // (0: the model's own) and how many leading samples it sees (0: all).
+  long screening_per_parameter = 1500;
   int screening_substeps = 5;
+  Eigen::Index screening_samples = 16384;
   // Called with a short status ("restart 2/3", ...); may be empty.
   std::function<void(const std::string&)> status;
 

@@ -39,6 +39,16 @@ ModelData::ModelData(const Measurement& m, SignalScales s)
       segment(m.segment),
       estimation(Eigen::VectorXd::Ones(m.size())) {}
 
+ModelData ModelData::head(Eigen::Index n) const {
+  ModelData h = *this;
+  h.t = t.head(n);
+  h.u = u.head(n);
+  h.y = y.head(n);
+  h.estimation = estimation.head(n);
+  if (!segment.empty()) h.segment.assign(segment.begin(), segment.begin() + n);
+  return h;
+}
+
 Eigen::Index ModelData::estimation_count() const {
   return static_cast<Eigen::Index>(estimation.sum());
 }

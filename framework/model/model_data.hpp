@@ -38,6 +38,8 @@ struct ModelData {
   ModelData(const Measurement& m, SignalScales scales);
 
   Eigen::Index size() const { return t.size(); }
+  // The first n samples (n <= size()), with their labels and mask.
+  ModelData head(Eigen::Index n) const;
   Eigen::Index estimation_count() const;
   Eigen::Index heldout_count() const { return size() - estimation_count(); }
 };
