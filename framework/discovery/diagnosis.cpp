@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <optional>
 
 #include "framework/discovery/comparison.hpp"
@@ -13,10 +14,12 @@ namespace hystbench {
 namespace {
 
 std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOptions& o) {
-  if (!o.candidates.empty()) return o.candidates;
+  std::vector<std::string> all = o.candidates;
+  if (all.empty())
+    for (const auto* info : EffectRegistry::instance().all()) all.push_back(info->name);
   std::vector<std::string> out;
-  for (const auto* info : EffectRegistry::instance().all())
-    if (!model.has(info->name)) out.push_back(info->name);
+  for (const auto& name : all)
+    if (!model.has(name)) out.push_back(name);
   return out;
 }
 
@@ -104,15 +107,23 @@ Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData
   d.options = o.to_json();
   const auto effects = candidate_effects(model, o);
   std::vector<std::optional<Candidate>> tried(effects.size());
+  std::vector<std::exception_ptr> failed(effects.size());
   long done = 0;
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < effects.size(); ++i) {
-    tried[i] = try_candidate(effects[i], d, data, o);
+    // An exception must not leave an OpenMP region: it is rethrown below.
+    try {
+      tried[i] = try_candidate(effects[i], d, data, o);
+    } catch (...) {
+      failed[i] = std::current_exception();
+    }
 #pragma omp critical(diagnosis_status)
     if (o.fit.status)
       o.fit.status("candidates " + std::to_string(++done) + "/" + std::to_string(effects.size()) +
                    " (" + effects[i] + " done)");
   }
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
   for (auto& c : tried) d.candidates.push_back(std::move(*c));
   std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const Candidate& a, const Candidate& b) {
     if (a.significant != b.significant) return a.significant;

@@ -1,8 +1,14 @@
 #pragma once
 // Discovery: fit the start model, then repeat diagnose -> add the winner ->
-// refit until the verdict is "none". Every rung of the ladder records the
-// model, its parameters and its errors, so a reader sees the error fall
-// effect by effect.
+// refit -> prune until the verdict is "none". Every rung of the ladder
+// records the model, its parameters and its errors, so a reader sees the
+// error fall effect by effect.
+//
+// Pruning: an effect just added may make one already there redundant (a
+// Bouc-Wen oscillator explains the resonance an ARX block was fitted to).
+// After each addition every other effect is tried out (removed and the rest
+// polished); the removal that lowers the BIC most is made, and again, until
+// no removal lowers it.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +23,7 @@ struct LadderStep {
   FitErrors errors;
   double bic = 0.0;
   std::string added;      // effect added at this step ("" for the start)
+  std::vector<std::string> removed;  // effects the new one made redundant
   std::string evidence;   // why it was added
   nlohmann::json where;   // compare_signals of this step's fit (from its diagnosis)
 };

@@ -12,6 +12,7 @@
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/markdown.hpp"
 #include "framework/report/provenance.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 namespace {
@@ -23,7 +24,11 @@ double estimated_sigma(const Ladder& ladder) {
   return floor.value("sigma", std::nan(""));
 }
 
-std::string step_label(const LadderStep& s) { return s.added.empty() ? "start" : "+" + s.added; }
+std::string step_label(const LadderStep& s) {
+  std::string label = s.added.empty() ? "start" : "+" + s.added;
+  for (const auto& r : s.removed) label += " −" + r;
+  return label;
+}
 
 std::filesystem::path write_ladder_figure(const std::filesystem::path& dir, const Ladder& ladder,
                                           const LadderContext& ctx) {
@@ -72,6 +77,7 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
     const auto e = s.errors.to_json();
     steps.push_back({{"step", k},
                      {"added", s.added},
+                     {"removed", s.removed},
                      {"effects", s.model.effects()},
                      {"model", s.model.text()},
                      {"parameters", parameters},
@@ -115,9 +121,14 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
   out << "\nEstimated noise σ " << num(estimated_sigma(ladder)) << unit;
   if (ctx.true_noise_sd) out << "; true noise σ " << num(*ctx.true_noise_sd) << unit;
   out << ".\n\n![ladder](ladder.png)\n\n## Why each effect was added\n\n";
-  for (std::size_t k = 1; k < ladder.steps.size(); ++k)
+  for (std::size_t k = 1; k < ladder.steps.size(); ++k) {
     out << k << ". **" << ladder.steps[k].added << "**: " << ladder.steps[k].evidence
-        << " ([diagnosis](step_" << k - 1 << "/report.md))\n";
+        << " ([diagnosis](step_" << k - 1 << "/report.md))";
+    if (!ladder.steps[k].removed.empty())
+      out << " It made " << join(ladder.steps[k].removed, ", ")
+          << " redundant: removing it lowered the BIC, so it was dropped.";
+    out << "\n";
+  }
   out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
       << ladder.steps.size() - 1 << "/report.md). Final fit: `fit.json` (use it with "
       << "`hystbench compare`).\n";

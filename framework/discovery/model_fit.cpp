@@ -7,7 +7,6 @@
 #include "framework/core/registry.hpp"
 #include "framework/core/text.hpp"
 #include "framework/local/nlopt_search.hpp"
-#include "framework/local/polished_run.hpp"
 #include "framework/model/model_problem.hpp"
 
 namespace hystbench {
@@ -61,19 +60,33 @@ void report(const FitOptions& o, const std::string& text) {
   if (o.status) o.status(text);
 }
 
+// The problem the global stages search: the leading samples of the record
+// and coarse ODE sub-steps (FitOptions::screening_*), because they only
+// need to find the right basin; every polish uses the whole record at the
+// model's own sub-steps.
+struct Coarse {
+  Model model;
+  ModelData data;
+  ModelProblem problem;
+  Coarse(const Model& m, const ModelData& d, const FitOptions& o)
+      : model(coarse_model(m, o)),
+        data(o.screening_samples > 0 && o.screening_samples < d.size() ? d.head(o.screening_samples)
+                                                                         : d),
+        problem(model, data) {}
+  static Model coarse_model(Model m, const FitOptions& o) {
+    if (o.screening_substeps > 0) m.set_substeps(o.screening_substeps);
+    return m;
+  }
+};
+
 // The global search for a newly added effect's parameters, the others held
 // at x0. It may run on the first part of the record and integrate ODE
 // effects coarsely: the polish that follows uses the whole record and the
 // model's own sub-steps. Starts from x0 itself, so it is never worse.
 FitResult screen_new_effect(const Model& model, const ModelData& data, const Eigen::VectorXd& x0,
                             const std::vector<int>& fresh, const FitOptions& o) {
-  Model coarse = model;
-  if (o.screening_substeps > 0) coarse.set_substeps(o.screening_substeps);
-  const ModelData part = o.screening_samples > 0 && o.screening_samples < data.size()
-                             ? data.head(o.screening_samples)
-                             : data;
-  ModelProblem coarse_problem(coarse, part);
-  SubspaceProblem sub(coarse_problem, x0, fresh);
+  const Coarse coarse(model, data, o);
+  SubspaceProblem sub(coarse.problem, x0, fresh);
   const long budget = std::max(1000L, o.screening_per_parameter * long(fresh.size()));
   EvaluationContext ctx(sub, evaluation_budget(budget + 1),
                         trial_seed(o.seed, "screen:" + model.text(), 0));
@@ -114,6 +127,7 @@ FitResult fit_model(const Model& model, const ModelData& data, const FitOptions&
                     const Eigen::VectorXd* warm) {
   const auto start = std::chrono::steady_clock::now();
   ModelProblem problem(model, data);
+  const Coarse coarse(model, data, o);
   const int dim = problem.dimension();
   BestSoFar best;
   if (warm) {
@@ -122,12 +136,11 @@ FitResult fit_model(const Model& model, const ModelData& data, const FitOptions&
   }
   for (int r = 0; r < o.restarts; ++r) {
     report(o, "restart " + std::to_string(r + 1) + "/" + std::to_string(o.restarts));
-    const long global = o.global_budget(dim);
-    EvaluationContext ctx(problem, evaluation_budget(global + o.local_budget(dim)),
-                          trial_seed(o.seed, "fit:" + model.text(), std::uint64_t(r)));
-    auto optimizer = make_optimizer(o.optimizer, o.optimizer_params, "--optimizer");
-    run_polished(*optimizer, global, o.local, ctx);
-    best.take(ctx);
+    const auto seed = trial_seed(o.seed, "fit:" + model.text(), std::uint64_t(r));
+    EvaluationContext ctx(coarse.problem, evaluation_budget(o.global_budget(dim)), seed);
+    make_optimizer(o.optimizer, o.optimizer_params, "--optimizer")->run(ctx);
+    best.evaluations += ctx.evaluations();
+    polish_from(problem, ctx.best_point(), o, seed + 1, best);
   }
   if (best.x.size() == 0) best.x = model.neutral(), best.sse = problem.sse(best.x);
   return {model, best.x, best.sse, best.evaluations, seconds_since(start), best.start_sse};

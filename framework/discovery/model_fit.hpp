@@ -27,9 +27,11 @@ struct FitOptions {
   std::string local = "LN_BOBYQA";  // NLopt local method of the polish
   long local_evaluations = 0;       // polish per start; 0 = 300 per parameter, at least 1000
   std::uint64_t seed = 1;
-  // The global search of a new effect's parameters in a warm refit:
-  // evaluations per new parameter (at least 1000 in all), ODE sub-steps
-  // (0: the model's own) and how many leading samples it sees (0: all).
+  // The global stages (restarts, and the search of a new effect's
+  // parameters in a warm refit) may see a coarser problem than the polish:
+  // ODE sub-steps (0: the model's own) and the leading samples of the record
+  // (0: all). The new effect's search spends this many evaluations per new
+  // parameter (at least 1000 in all).
   long screening_per_parameter = 1500;
   int screening_substeps = 5;
   Eigen::Index screening_samples = 16384;

@@ -4,9 +4,23 @@
 #include <exception>
 
 #include "framework/core/registry.hpp"
-#include "framework/local/polished_run.hpp"
+#include "framework/local/nlopt_search.hpp"
 
 namespace hystbench {
+namespace {
+
+void run_with_polish(Optimizer& optimizer, const PolishSpec& polish, long evaluations,
+                     EvaluationContext& ctx) {
+  const long reserved = std::lround(polish.fraction * double(evaluations));
+  ctx.limit_evaluations(evaluations - reserved);
+  optimizer.run(ctx);
+  ctx.lift_evaluation_limit();
+  NloptSearch local;
+  local.algorithm = polish.algorithm;
+  run_nlopt(ctx, local, ctx.best_point(), ctx.remaining_evaluations());
+}
+
+}  // namespace
 
 TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
                       long trial) {
@@ -22,9 +36,7 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
     const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
     auto optimizer = info.create(Params(spec.params));
     if (spec.polish) {
-      const long evaluations = *experiment.budget.evaluations;
-      const long reserved = std::lround(spec.polish->fraction * double(evaluations));
-      run_polished(*optimizer, evaluations - reserved, spec.polish->algorithm, ctx);
+      run_with_polish(*optimizer, *spec.polish, *experiment.budget.evaluations, ctx);
     } else {
       optimizer->run(ctx);
     }

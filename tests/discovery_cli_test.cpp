@@ -1,0 +1,145 @@
+// The discovery commands as a user runs them: simulate a measurement with a
+// hidden effect, fit, compare, diagnose, discover; reruns that reproduce
+// bit for bit; bad input answered with one clear message and exit 2.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/temp_dir.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+Outcome run(const std::string& args) {
+  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
+
+// Data from `msd` with a sensor offset of 2 µm hidden in it: 2.4 s at 500 Hz.
+class DiscoveryCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    temp_.write("exc.json", R"({"sample_rate": 500, "segments": [
+        {"type": "sine", "frequency": 2, "amplitude": 50, "duration": 0.6},
+        {"type": "sine", "frequency": 6, "amplitude": 60, "duration": 0.6},
+        {"type": "sine", "frequency": 15, "amplitude": 40, "duration": 0.6},
+        {"type": "sine", "frequency": 30, "amplitude": 50, "duration": 0.6}]})");
+    temp_.write("truth.json", R"({"gain": 0.1, "msd.period": 0.03, "msd.zeta": 0.2,
+                                  "offset.c0": 2.0})");
+    const auto s = run("simulate --model msd,offset --params " + path("truth.json") +
+                       " --excitation " + path("exc.json") +
+                       " --noise 0.01 --seed 4 --input-unit V --output-unit µm --out " +
+                       path("data.csv"));
+    ASSERT_EQ(s.code, 0) << s.output;
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  static constexpr const char* kQuick = " --evaluations 3000 --restarts 1 --local-evaluations 600";
+
+  hystbench::test_support::TempDir temp_;
+  const fs::path& dir_ = temp_.path();
+};
+
+TEST_F(DiscoveryCli, FitWritesNamedPhysicalParametersAndReproduces) {
+  const auto a = run("fit --data " + path("data.csv") + " --model msd,offset --out " + path("a") + kQuick);
+  ASSERT_EQ(a.code, 0) << a.output;
+  const auto b = run("fit --data " + path("data.csv") + " --model msd,offset --out " + path("b") + kQuick);
+  ASSERT_EQ(b.code, 0) << b.output;
+  const auto fa = read_json(dir_ / "a" / "fit.json"), fb = read_json(dir_ / "b" / "fit.json");
+  EXPECT_EQ(fa["parameters"], fb["parameters"]);
+  EXPECT_EQ(fa["model"], "msd,offset");
+  EXPECT_EQ(fa["seed"], 1);
+  ASSERT_TRUE(fa["metrics"].contains("heldout"));
+  for (const auto& p : fa["parameters"])
+    if (p["name"] == "offset.c0") {
+      EXPECT_EQ(p["unit"], "µm");
+      EXPECT_NEAR(p["value"].get<double>(), 2.0, 0.1);
+    }
+  // The fit's own numbers say where it came from.
+  EXPECT_TRUE(fa["provenance"].contains("git_commit"));
+}
+
+TEST_F(DiscoveryCli, CompareWritesMetricsReportAndFigures) {
+  ASSERT_EQ(run("fit --data " + path("data.csv") + " --model msd --out " + path("f") + kQuick).code, 0);
+  const auto c = run("compare --data " + path("data.csv") + " --fit " + path("f/fit.json") +
+                     " --out " + path("c"));
+  ASSERT_EQ(c.code, 0) << c.output;
+  const auto m = read_json(dir_ / "c" / "metrics.json");
+  for (const char* key : {"estimation", "heldout", "by_segment", "by_amplitude", "by_branch",
+                          "by_time", "residual", "noise_floor", "signatures"})
+    EXPECT_TRUE(m.contains(key)) << key;
+  EXPECT_TRUE(fs::exists(dir_ / "c" / "report.md"));
+  EXPECT_TRUE(fs::exists(dir_ / "c" / "residual.gp"));
+  // A model without the offset leaves a residual with a clearly non-zero mean.
+  EXPECT_GT(std::abs(m["residual"]["mean"].get<double>()), 1.0);
+}
+
+TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
+  const auto d = run("diagnose --data " + path("data.csv") + " --model msd --out " + path("d") +
+                     " --candidates offset,drift,delay" + kQuick);
+  ASSERT_EQ(d.code, 0) << d.output;
+  const auto j = read_json(dir_ / "d" / "diagnosis.json");
+  EXPECT_EQ(j["verdict"], "offset");
+  EXPECT_EQ(j["candidates"][0]["effect"], "offset");
+  for (const char* key : {"delta_bic", "rmse_before", "rmse_after", "heldout_rmse_before",
+                          "heldout_rmse_after", "evidence"})
+    EXPECT_TRUE(j["candidates"][0].contains(key)) << key;
+  EXPECT_TRUE(j.contains("where"));
+  EXPECT_TRUE(fs::exists(dir_ / "d" / "extended_fit.json"));
+  EXPECT_NE(d.output.find("verdict: offset"), std::string::npos);
+
+  const auto l = run("discover --data " + path("data.csv") + " --start msd --out " + path("l") +
+                     " --candidates offset,drift,delay" + kQuick);
+  ASSERT_EQ(l.code, 0) << l.output;
+  const auto ladder = read_json(dir_ / "l" / "ladder.json");
+  EXPECT_EQ(ladder["final_effects"], nlohmann::json({"msd", "offset"}));
+  EXPECT_EQ(ladder["steps"].size(), 2u);
+  EXPECT_EQ(ladder["steps"][1]["added"], "offset");
+  const double sd = read_json(dir_ / "data.truth.json")["noise"]["sd"];
+  EXPECT_LT(ladder["steps"][1]["heldout_rmse"].get<double>(), 1.2 * sd);
+  EXPECT_TRUE(fs::exists(dir_ / "l" / "ladder.md"));
+  EXPECT_TRUE(fs::exists(dir_ / "l" / "ladder.gp"));
+}
+
+TEST_F(DiscoveryCli, BadInputGetsOneMessageAndExitTwo) {
+  auto r = run("fit --data " + path("data.csv") + " --model msd,creeep --out " + path("x"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("creeep"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("creep"), std::string::npos) << "names the catalog: " << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "x" / "fit.json"));
+
+  r = run("diagnose --data " + path("data.csv") + " --out " + path("y"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("either --model LIST"), std::string::npos) << r.output;
+
+  r = run("compare --data " + path("data.csv") + " --fit " + path("truth.json") + " --out " + path("z"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("not a fit file"), std::string::npos) << r.output;
+
+  r = run("fit --data " + path("data.csv") + " --model msd --holdout half --out " + path("w"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("last:FRACTION"), std::string::npos) << r.output;
+
+  r = run("fit --data " + path("data.csv") + " --model msd --optimizer nope --out " + path("v"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("jso"), std::string::npos) << "names the optimizers: " << r.output;
+}
+
+}  // namespace
