@@ -44,8 +44,10 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
 }
 
 void print_headline(const nlohmann::json& metrics, const std::string& unit) {
+  // Without a hold-out every sample is an estimation sample: "all" says it.
+  const bool parts = metrics.contains("heldout");
   for (const char* part : {"estimation", "heldout", "all"}) {
-    if (!metrics.contains(part)) continue;
+    if (!metrics.contains(part) || (!parts && std::string(part) != "all")) continue;
     const auto& m = metrics[part];
     std::cout << "  " << part << ": RMSE " << m["rmse"].dump() << " " << unit << ", fit "
               << m["fit_percent"].dump() << " %, n " << m["n"].dump() << "\n";
@@ -67,7 +69,7 @@ void compare(const CompareOptions& o, const CLI::App& cmd) {
   const auto input = comparison_input(data, std::move(y), source.u_unit, source.y_unit);
   const auto metrics = compare_signals(input);
   const auto files = write_comparison(dir, input, metrics,
-                                      "Model " + fit.model.text() + " against " + o.data.data,
+                                      "Model " + fit.model.text() + " against " + source.file_name(),
                                       fit.model.text());
   std::cout << "model " << fit.model.text() << " on " << o.data.data
             << (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) +

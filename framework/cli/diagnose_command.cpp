@@ -42,25 +42,21 @@ void run_diagnose(DiagnoseCommandOptions& o) {
   StatusLine status(stderr_is_terminal());
   FitOptions fit = o.fit.fit_options();
   DiagnoseOptions options = o.diagnose.diagnose_options(fit, source);
-  Model model = o.model.empty() ? FitRecord::read(o.from_fit).model : Model::parse(o.model);
+  // Either a fit to start from (its scales, so its parameters keep their
+  // meaning) or a model to fit first.
+  std::optional<FitRecord> start;
+  if (!o.from_fit.empty()) start = FitRecord::read(o.from_fit);
+  Model model = start ? start->model : Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
   const auto dir = o.output.prepare("diagnosis.json");
   options.fit.status = [&](const std::string& s) { status.show("diagnose " + model.text() + ": " + s); };
 
-  Eigen::VectorXd x;
-  std::optional<ModelData> data;
-  if (!o.from_fit.empty()) {
-    const FitRecord start = FitRecord::read(o.from_fit);
-    data = prepare_model_data(m, start.scales, holdout);
-    x = start.x;
-  } else {
-    data = prepare_model_data(m, SignalScales::of(m), holdout);
-    x = fit_model(model, *data, options.fit).x;
-  }
-  const Diagnosis d = diagnose(model, x, *data, options);
+  const ModelData data = prepare_model_data(m, start ? start->scales : SignalScales::of(m), holdout);
+  const Eigen::VectorXd x = start ? start->x : fit_model(model, data, options.fit).x;
+  const Diagnosis d = diagnose(model, x, data, options);
   status.finish();
   std::string note;
-  write_diagnosis(dir, d, *data, source, holdout, note);
+  write_diagnosis(dir, d, data, source, holdout, note);
   print_diagnosis(d, source.y_unit);
   if (!note.empty()) std::cout << note << "\n";
   std::cout << "wrote " << (dir / "report.md").string() << " and diagnosis.json\n";

@@ -1,5 +1,7 @@
 #include "framework/discovery/data_source.hpp"
 
+#include <filesystem>
+
 #include "framework/io/truth_file.hpp"
 
 namespace hystbench {
@@ -13,6 +15,10 @@ Measurement DataSource::load() {
   if (y_unit.empty() && units.is_object() && units.value("y", nlohmann::json()).is_string())
     y_unit = units["y"].get<std::string>();
   return m;
+}
+
+std::string DataSource::file_name() const {
+  return std::filesystem::path(path).filename().string();
 }
 
 nlohmann::json DataSource::to_json() const {

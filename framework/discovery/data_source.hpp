@@ -14,6 +14,8 @@ struct DataSource {
   ColumnMap columns;
   std::string u_unit, y_unit;  // empty: taken from DATA.truth.json when it has them
 
+  // The data file's name without its folder, for titles.
+  std::string file_name() const;
   // Reads the CSV; fills empty units from the truth file beside it.
   Measurement load();
   nlohmann::json to_json() const;

@@ -59,7 +59,13 @@ std::string worst_groups(const nlohmann::json& where, const std::string& unit) {
   }
   const std::string branch = worst_of(branches, "label", unit);
   if (!branch.empty()) out += "- worst branch: " + branch + "\n";
-  const std::string window = worst_of(where.value("by_time", nlohmann::json::array()), "window", unit);
+  nlohmann::json windows = nlohmann::json::array();
+  for (const auto& w : where.value("by_time", nlohmann::json::array())) {
+    auto labelled = w;
+    labelled["label"] = num(w["t_start"]) + "–" + num(w["t_end"]) + " s";
+    windows.push_back(labelled);
+  }
+  const std::string window = worst_of(windows, "label", unit);
   if (!window.empty()) out += "- worst time window: " + window + "\n";
   return out.empty() ? out : out + "\n";
 }
@@ -147,7 +153,7 @@ std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, 
       d.where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
   const std::string unit = y_unit.empty() ? "" : " [" + y_unit + "]";
   std::ostringstream body;
-  body << "set datafile separator ','\nset style data histograms\n"
+  body << "set datafile separator ','\nset style data histograms\nset xrange [-0.6:*]\n"
        << "set style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
        << "set xtics rotate by -35 noenhanced\nset key outside top center horizontal\n"
        << "set grid ytics\nset logscale y\n"
@@ -196,7 +202,7 @@ std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& 
   j["provenance"] = provenance(omp_get_max_threads(), seed);
   write_file_atomic(dir / "diagnosis.json", j.dump(2) + "\n");
   write_file_atomic(dir / "report.md",
-                    diagnosis_markdown(d, source.path, source.y_unit, "current/report.md"));
+                    diagnosis_markdown(d, source.file_name(), source.y_unit, "current/report.md"));
   return files;
 }
 

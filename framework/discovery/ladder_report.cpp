@@ -104,7 +104,7 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
 std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
   const std::string unit = ctx.source.y_unit.empty() ? "" : " " + ctx.source.y_unit;
   std::ostringstream out;
-  out << "# Discovery on " << ctx.source.path << "\n\n";
+  out << "# Discovery on " << ctx.source.file_name() << "\n\n";
   out << "Started from `" << ladder.steps.front().model.text() << "`, ended with `"
       << ladder.steps.back().model.text() << "`"
       << (ladder.stopped_by_limit ? " (stopped at the step limit, the last verdict still named an effect)"
