@@ -79,11 +79,18 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
         << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "
         << num(100.0 * d.options.value("heldout_gain", 0.01)) << " % lower).";
     const auto& r = d.where.value("residual", nlohmann::json::object());
+    const double ratio = d.where.value("noise_floor", nlohmann::json::object())
+                             .value("rmse_over_sigma", std::nan(""));
     if (r.value("white", false))
       out << " The residual is white: the model has nothing systematic left to find.";
+    else if (ratio <= 1.1)
+      out << " The error is at the estimated noise floor (RMSE / σ = " << num(ratio)
+          << "); the residual is not white, which points at coloured measurement noise rather "
+             "than at a missing effect.";
     else
-      out << " The residual is not white: something systematic is left that no catalog effect "
-             "captures; consider writing an effect of your own (README, \"Add your own effect\").";
+      out << " The residual is not white and the error is above the noise floor: something "
+             "systematic is left that no catalog effect captures; consider writing an effect of "
+             "your own (README, \"Adding a physical effect\").";
     out << "\n\n";
     return out.str();
   }
