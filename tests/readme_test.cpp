@@ -1,5 +1,6 @@
-// The README's "Add an optimizer" code is the example plugin that the
-// out-of-tree test builds and runs, so the walkthrough stays true.
+// The README's "Adding an optimizer" and "Adding a physical effect" code is
+// the example plugins that the out-of-tree tests build and run, so the
+// walkthroughs stay true.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -22,6 +23,19 @@ TEST(Readme, AddAnOptimizerCodeIsTheTestedExamplePlugin) {
   example.erase(0, example.find('\n') + 1);  // its own one-line header comment
   EXPECT_NE(read(root + "/README.md").find(example), std::string::npos)
       << "README.md no longer shows examples/random_search_plugin/random_search.cpp";
+}
+
+TEST(Readme, AddAnEffectCodeIsTheTestedExampleEffect) {
+  const std::string root = HYSTBENCH_SOURCE_DIR;
+  const std::string example = read(root + "/examples/thermal_drift_effect/thermal_drift.cpp");
+  ASSERT_FALSE(example.empty());
+  const std::string readme = read(root + "/README.md");
+  const auto section = readme.find("\n## Adding a physical effect\n");
+  ASSERT_NE(section, std::string::npos) << "README.md has no section \"Adding a physical effect\"";
+  const auto next = readme.find("\n## ", section + 1);
+  EXPECT_NE(readme.substr(section, next - section).find(example), std::string::npos)
+      << "README.md's \"Adding a physical effect\" no longer shows "
+         "examples/thermal_drift_effect/thermal_drift.cpp";
 }
 
 }  // namespace
