@@ -69,6 +69,7 @@ DiagnoseOptions DiagnoseCliOptions::diagnose_options(FitOptions fit, const DataS
   }
   d.bic_threshold = bic_threshold;
   d.heldout_gain = heldout_gain;
+  d.candidate_restarts = candidate_restarts;
   d.u_unit = source.u_unit;
   d.y_unit = source.y_unit;
   return d;
@@ -83,6 +84,9 @@ void add_diagnose_options(CLI::App* cmd, DiagnoseCliOptions& o) {
   cmd->add_option("--heldout-gain", o.heldout_gain,
                   "... and its held-out RMSE falls by at least this fraction")
       ->capture_default_str()->check(CLI::Range(0.0, 0.99));
+  cmd->add_option("--candidate-restarts", o.candidate_restarts,
+                  "global restarts of each extended model besides its warm refit")
+      ->capture_default_str()->check(CLI::Range(0, 100));
 }
 
 std::filesystem::path OutputOptions::prepare(const std::string& marker) const {

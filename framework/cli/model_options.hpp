@@ -33,6 +33,7 @@ void add_fit_options(CLI::App* cmd, FitCliOptions& o);
 struct DiagnoseCliOptions {
   std::string candidates;  // comma-separated; empty = the whole catalog
   double bic_threshold = -10.0, heldout_gain = 0.01;
+  int candidate_restarts = 1;
   DiagnoseOptions diagnose_options(FitOptions fit, const DataSource& source) const;
 };
 void add_diagnose_options(CLI::App* cmd, DiagnoseCliOptions& o);

@@ -1,5 +1,7 @@
 #include "framework/discovery/diagnosis.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -53,9 +55,19 @@ FitResult refit_candidate(const Model& extended, const std::string& effect, cons
   const Eigen::VectorXd x0 = extended.carry_over(current.model, current.x);
   const auto fresh = extended.parameters_of(effect);
   FitResult best = refit_warm(extended, data, x0, fresh, o.fit);
-  if (const auto reset = dynamics_reset_start(extended, effect, x0)) {
-    FitResult other = refit_warm(extended, data, *reset, fresh, o.fit);
+  auto keep_better = [&](FitResult other) {
     if (other.sse < best.sse) best = std::move(other);
+  };
+  if (const auto reset = dynamics_reset_start(extended, effect, x0))
+    keep_better(refit_warm(extended, data, *reset, fresh, o.fit));
+  if (o.candidate_restarts > 0) {
+    FitOptions global = o.fit;
+    global.restarts = o.candidate_restarts;
+    // A lighter global stage than a fit's: it only has to find the basin
+    // that the warm refit cannot reach from the current one.
+    if (global.evaluations == 0) global.evaluations = std::max(5000L, 1000L * extended.dimension());
+    global.status = nullptr;  // candidates run in parallel: one status line is enough
+    keep_better(fit_model(extended, data, global));
   }
   return best;
 }
@@ -87,6 +99,7 @@ nlohmann::json DiagnoseOptions::to_json() const {
   return {{"fit", fit.to_json()},
           {"candidates", candidates},
           {"bic_threshold", bic_threshold},
+          {"candidate_restarts", candidate_restarts},
           {"heldout_gain", heldout_gain}};
 }
 
@@ -109,6 +122,7 @@ Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData
   std::vector<std::optional<Candidate>> tried(effects.size());
   std::vector<std::exception_ptr> failed(effects.size());
   long done = 0;
+  omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < effects.size(); ++i) {
     // An exception must not leave an OpenMP region: it is rethrown below.

@@ -28,6 +28,9 @@ struct DiagnoseOptions {
   std::vector<std::string> candidates;  // empty: every registered effect not in the model
   double bic_threshold = -10.0;
   double heldout_gain = 0.01;
+  // Global restarts of every extended model that compete with its warm
+  // refit: a fit stuck in a poor basin can hide what an effect would give.
+  int candidate_restarts = 1;
   std::string u_unit, y_unit;  // for the evidence sentences and the breakdowns
 
   nlohmann::json to_json() const;

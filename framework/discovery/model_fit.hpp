@@ -32,7 +32,7 @@ struct FitOptions {
   // ODE sub-steps (0: the model's own) and the leading samples of the record
   // (0: all). The new effect's search spends this many evaluations per new
   // parameter (at least 1000 in all).
-  long screening_per_parameter = 1500;
+  long screening_per_parameter = 1000;
   int screening_substeps = 5;
   Eigen::Index screening_samples = 16384;
   // Called with a short status ("restart 2/3", ...); may be empty.

@@ -18,7 +18,7 @@ double ModelProblem::sse(const Eigen::Ref<const Eigen::VectorXd>& x) const {
 void ModelProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                             Eigen::Ref<Eigen::VectorXd> f) const {
   const Eigen::Index n = X.cols();
-#pragma omp parallel for schedule(dynamic) if (n > 1 && !omp_in_parallel())
+#pragma omp parallel for schedule(dynamic) if (n > 1)
   for (Eigen::Index j = 0; j < n; ++j) f[j] = sse(X.col(j));
 }
 

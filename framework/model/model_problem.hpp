@@ -17,9 +17,10 @@ class ModelProblem : public Problem {
 
   std::string name() const override { return "model(" + model_.text() + ")"; }
   const Bounds& bounds() const override { return bounds_; }
-  // Candidates are simulated in parallel (OpenMP) unless the caller is
-  // already inside a parallel region; each column's value does not depend
-  // on the thread that computed it.
+  // Candidates are simulated in parallel (OpenMP; nested inside the
+  // parallel candidates of a diagnosis when nesting is enabled, so that the
+  // last long-running candidate still uses every core); each column's value
+  // does not depend on the thread that computed it.
   void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                 Eigen::Ref<Eigen::VectorXd> f) const override;
   nlohmann::json describe() const override;
