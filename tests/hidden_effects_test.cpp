@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct HiddenCase {
   std::string effect;
   nlohmann::json spec;
 };
+
+// gtest prints a parameter in failure messages and test listings.
+void PrintTo(const HiddenCase& c, std::ostream* os) { *os << c.effect; }
 
 // Cases marked "in_test_suite": false stay in the file (with their reason)
 // but are not instantiated here.
