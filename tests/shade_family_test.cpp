@@ -265,5 +265,13 @@ TEST(ShadeFamilyParams, RejectBadValuesWithTheirNamesAndRanges) {
                      "memory_cr, archive_rate, p_max, p_min, bounds");
 }
 
+TEST(SuccessHistory, LehmerMeanSurvivesGainsNearTheLargestDouble) {
+  // Diverging candidates can have finite SSE near DBL_MAX: the gains' sum
+  // overflows, yet the weights are equal and the mean is (0.25+0.49)/1.2.
+  const double huge = std::numeric_limits<double>::max() / 1.5;
+  const double m = weighted_lehmer_mean({0.5, 0.7}, {huge, huge});
+  EXPECT_NEAR(m, (0.25 + 0.49) / 1.2, 1e-15);
+}
+
 }  // namespace
 }  // namespace hystbench

@@ -18,10 +18,19 @@ void SuccessSet::add(double F, double CR, double f_parent, double f_trial) {
 double weighted_lehmer_mean(const std::vector<double>& values, const std::vector<double>& weights) {
   if (values.empty() || values.size() != weights.size())
     throw std::logic_error("weighted_lehmer_mean: values and weights must match and be non-empty");
-  const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  // Gains of diverging candidates can be finite yet near DBL_MAX: their sum
+  // overflows, and every weight would become 0 (the mean 0/0). Scaling by
+  // the largest gain first keeps the same weights.
+  double scale = 1.0;
+  double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  if (!std::isfinite(total)) {
+    scale = *std::max_element(weights.begin(), weights.end());
+    total = 0.0;
+    for (double w : weights) total += w / scale;
+  }
   double squares = 0.0, plain = 0.0;
   for (std::size_t m = 0; m < values.size(); ++m) {
-    const double w = weights[m] / total;
+    const double w = weights[m] / scale / total;
     squares += w * values[m] * values[m];
     plain += w * values[m];
   }
