@@ -2,6 +2,7 @@
 // thread counts, and bad input answered with one clear message and exit 2.
 #include <gtest/gtest.h>
 
+#include "tests/run_command.hpp"
 #include "tests/temp_dir.hpp"
 #include <sys/wait.h>
 
@@ -15,20 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string output;  // stdout and stderr
-};
-
-Outcome hystbench(const std::string& args) {
-  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using hystbench::test_support::hystbench;
+using hystbench::test_support::Outcome;
 
 class Cli : public ::testing::Test {
  protected:

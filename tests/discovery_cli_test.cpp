@@ -2,34 +2,23 @@
 // hidden effect, fit, compare, diagnose, discover; reruns that reproduce
 // bit for bit; bad input answered with one clear message and exit 2.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/run_command.hpp"
 #include "tests/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string output;  // stdout and stderr
-};
+using hystbench::test_support::Outcome;
 
-Outcome run(const std::string& args) {
-  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+// The discovery commands, run like the others.
+Outcome run(const std::string& args) { return hystbench::test_support::hystbench(args); }
 
 nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
 

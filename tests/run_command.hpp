@@ -1,0 +1,26 @@
+#pragma once
+// Runs the built `hystbench` program as a user would and captures what it
+// printed and how it exited.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+namespace hystbench::test_support {
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+inline Outcome hystbench(const std::string& args) {
+  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+}  // namespace hystbench::test_support
