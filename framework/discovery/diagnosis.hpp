@@ -44,7 +44,7 @@ struct Candidate {
   int delta_k = 0;
   double delta_bic = 0.0;
   bool significant = false;
-  std::string evidence;  // one plain sentence
+  std::string evidence = {};  // one plain sentence
 };
 
 struct Diagnosis {
@@ -52,10 +52,10 @@ struct Diagnosis {
   Eigen::VectorXd x;
   FitErrors errors;
   double bic = 0.0;
-  std::vector<Candidate> candidates;  // best first
-  std::string verdict;                // an effect name or "none"
-  nlohmann::json where;               // compare_signals of the current fit
-  nlohmann::json options;
+  std::vector<Candidate> candidates = {};  // best first
+  std::string verdict = {};                // an effect name or "none"
+  nlohmann::json where = {};               // compare_signals of the current fit
+  nlohmann::json options = {};
 
   const Candidate* winner() const;
   // {"verdict", "model", "candidates": [...], "where", "errors", "bic", "thresholds"}

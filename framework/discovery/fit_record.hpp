@@ -13,10 +13,10 @@ namespace hystbench {
 
 struct FitRecord {
   Model model;
-  Eigen::VectorXd x;  // normalised
-  SignalScales scales;
-  DataSource data;
-  HoldoutSpec holdout;
+  Eigen::VectorXd x = {};  // normalised
+  SignalScales scales = {};
+  DataSource data = {};
+  HoldoutSpec holdout = {};
   nlohmann::json details = nlohmann::json::object();  // metrics, options, seed, provenance
 
   // The "parameters" list: name, physical value and unit, normalised value.

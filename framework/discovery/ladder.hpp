@@ -22,10 +22,10 @@ struct LadderStep {
   Eigen::VectorXd x;
   FitErrors errors;
   double bic = 0.0;
-  std::string added;      // effect added at this step ("" for the start)
-  std::vector<std::string> removed;  // effects the new one made redundant
-  std::string evidence;   // why it was added
-  nlohmann::json where;   // compare_signals of this step's fit (from its diagnosis)
+  std::string added = {};                 // effect added at this step ("" for the start)
+  std::vector<std::string> removed = {};  // effects the new one made redundant
+  std::string evidence = {};              // why it was added
+  nlohmann::json where = {};              // compare_signals of this step's fit
 };
 
 struct Ladder {
