@@ -63,9 +63,6 @@ FitResult refit_candidate(const Model& extended, const std::string& effect, cons
   if (o.candidate_restarts > 0) {
     FitOptions global = o.fit;
     global.restarts = o.candidate_restarts;
-    // A lighter global stage than a fit's: it only has to find the basin
-    // that the warm refit cannot reach from the current one.
-    if (global.evaluations == 0) global.evaluations = std::max(5000L, 1000L * extended.dimension());
     global.status = nullptr;  // candidates run in parallel: one status line is enough
     keep_better(fit_model(extended, data, global));
   }

@@ -24,7 +24,10 @@ class Backlash : public Effect {
         "Krasnosel'skii & Pokrovskii, Systems with Hysteresis, Springer 1989 (play operator); "
         "Janocha & Kuhnen, Sens. Actuators A 79 (2000)";
     i.stage = EffectStage::Input;
-    i.params = {{"r", 0.0, 1.0, 0.0, 0, 1, "", "half-width of the play (0 = no backlash)"}};
+    // At r = 0.3 input RMS the play already swallows a third of a sine's
+    // stroke; wider bounds only give the global search a basin of dead-band
+    // models far from any real actuator (seen on the hidden-backlash case).
+    i.params = {{"r", 0.0, 0.3, 0.0, 0, 1, "", "half-width of the play (0 = no backlash)"}};
     i.signature =
         "the error sits at the reversal points where du/dt changes sign and the residual "
         "correlates with sign(du/dt)";
