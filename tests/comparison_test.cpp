@@ -195,27 +195,6 @@ TEST(ComparisonSignals, BranchesFollowTheSignOfTheInputStep) {
 
 // ---- correlation statistics -----------------------------------------------------
 
-TEST(ComparisonCorrelation, ChiSquaredSurvivalMatchesTables) {
-  // Upper critical values of chi-squared tables.
-  EXPECT_NEAR(chi_squared_survival(37.566, 20), 0.01, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(31.410, 20), 0.05, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(10.851, 20), 0.95, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(3.841, 1), 0.05, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(6.635, 1), 0.01, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(23.209, 10), 0.01, 2e-5);
-  EXPECT_NEAR(chi_squared_survival(124.342, 100), 0.05, 2e-5);
-  // Closed forms: chi2(2) survival exp(-x/2); P(1, x) = 1 - exp(-x); P(1/2, x) = erf(sqrt x).
-  for (double x : {0.1, 1.0, 5.0, 30.0, 80.0}) {
-    EXPECT_NEAR(chi_squared_survival(x, 2) / std::exp(-x / 2), 1.0, 1e-12) << x;
-    EXPECT_NEAR(gamma_p(1.0, x), 1.0 - std::exp(-x), 1e-14) << x;
-    EXPECT_NEAR(gamma_p(0.5, x), std::erf(std::sqrt(x)), 1e-14) << x;
-    EXPECT_NEAR(gamma_p(3.5, x) + gamma_q(3.5, x), 1.0, 1e-14) << x;
-  }
-  // Far tail: still positive and accurate relative to erfc.
-  EXPECT_NEAR(gamma_q(0.5, 50.0) / std::erfc(std::sqrt(50.0)), 1.0, 1e-10);
-  EXPECT_EQ(chi_squared_survival(0.0, 20), 1.0);
-}
-
 TEST(ComparisonCorrelation, CrossCorrelationPeaksAtTheDelay) {
   const Eigen::Index n = 2000;
   const Eigen::VectorXd u = gaussian(n, 1.0, 7);

@@ -1,5 +1,7 @@
 #include "framework/discovery/residual_correlation.hpp"
 
+#include "framework/stats/distributions.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,41 +29,6 @@ double lagged_sum(const Eigen::VectorXd& a, const Eigen::VectorXd& b, int tau) {
 void count_outside(Correlation& c) {
   c.outside = int(std::count_if(c.values.begin(), c.values.end(),
                                 [&](double v) { return std::abs(v) > c.bound; }));
-}
-
-// Series of P(a, x), for x < a + 1.
-double gamma_p_series(double a, double x) {
-  double term = 1.0 / a, sum = term;
-  for (int n = 1; n < 1000; ++n) {
-    term *= x / (a + n);
-    sum += term;
-    if (std::abs(term) < std::abs(sum) * 1e-16) break;
-  }
-  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
-}
-
-// Continued fraction of Q(a, x), for x >= a + 1 (modified Lentz).
-double gamma_q_fraction(double a, double x) {
-  constexpr double tiny = 1e-300;
-  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-  for (int i = 1; i < 1000; ++i) {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1.0 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1.0) < 1e-16) break;
-  }
-  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
-}
-
-void check_gamma_arguments(double a, double x) {
-  if (!(a > 0) || !(x >= 0))
-    throw std::invalid_argument("incomplete gamma: needs a > 0 and x >= 0");
 }
 
 }  // namespace
@@ -117,26 +84,8 @@ LjungBox ljung_box(const Eigen::VectorXd& e, int max_lags) {
     sum += v * v / double(n - tau);
   }
   lb.q = double(n) * double(n + 2) * sum;
-  lb.p_value = chi_squared_survival(lb.q, lb.lags);
+  lb.p_value = stats::chi_squared_survival(lb.q, lb.lags);
   return lb;
-}
-
-double gamma_p(double a, double x) {
-  check_gamma_arguments(a, x);
-  if (x == 0) return 0.0;
-  return x < a + 1 ? gamma_p_series(a, x) : 1.0 - gamma_q_fraction(a, x);
-}
-
-double gamma_q(double a, double x) {
-  check_gamma_arguments(a, x);
-  if (x == 0) return 1.0;
-  return x < a + 1 ? 1.0 - gamma_p_series(a, x) : gamma_q_fraction(a, x);
-}
-
-double chi_squared_survival(double x, double k) {
-  if (x <= 0) return 1.0;
-  if (std::isinf(x)) return 0.0;
-  return gamma_q(k / 2.0, x / 2.0);
 }
 
 }  // namespace hystbench

@@ -37,13 +37,4 @@ struct LjungBox {
 // A constant residual (or N < 2) has Q = 0, p = 1; a non-finite one NaN.
 LjungBox ljung_box(const Eigen::VectorXd& e, int max_lags = 20);
 
-// Regularised lower incomplete gamma P(a, x) = γ(a, x)/Γ(a) and its
-// complement Q(a, x) = 1 − P(a, x), a > 0, x ≥ 0: series for x < a + 1,
-// continued fraction (modified Lentz) otherwise, so neither loses accuracy
-// in its tail.
-double gamma_p(double a, double x);
-double gamma_q(double a, double x);
-// P(X > x) for X ~ χ²(k).
-double chi_squared_survival(double x, double k);
-
 }  // namespace hystbench

@@ -1,10 +1,6 @@
 #pragma once
 // Tail probabilities the significance tests need. Upper tails are computed
 // directly, never as 1 - CDF, so small p-values keep their digits.
-//
-// The chi-square tail is hystbench::chi_squared_survival (regularised
-// incomplete gamma, framework/discovery/residual_correlation.hpp); it is not
-// repeated here.
 
 namespace hystbench::stats {
 
@@ -23,5 +19,14 @@ double incomplete_beta(double a, double b, double x);
 // P(X > f) for X ~ F(d1, d2), d1, d2 > 0: I_{d2/(d2 + d1 f)}(d2/2, d1/2).
 // 1 for f <= 0, 0 for f = +inf.
 double f_survival(double f, double d1, double d2);
+
+// Regularised lower incomplete gamma P(a, x) = γ(a, x)/Γ(a) and its
+// complement Q(a, x) = 1 − P(a, x), a > 0, x ≥ 0: series for x < a + 1,
+// continued fraction (modified Lentz) otherwise, so neither loses accuracy
+// in its tail.
+double gamma_p(double a, double x);
+double gamma_q(double a, double x);
+// P(X > x) for X ~ χ²(k).
+double chi_squared_survival(double x, double k);
 
 }  // namespace hystbench::stats

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "framework/core/error.hpp"
-#include "framework/discovery/residual_correlation.hpp"
 #include "framework/stats/distributions.hpp"
 #include "framework/stats/rank_sum_test.hpp"
 #include "framework/stats/ranks.hpp"
