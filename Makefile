@@ -1,12 +1,13 @@
 # Thin wrapper over CMake. The two commands a new user needs:
 #   make demo   install what is missing, build, run the default experiment
 #   make test   install what is missing, build, run the whole test suite
+#   make paper  build, then regenerate results/paper/ (the seed papers' comparisons)
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # Keeps the inner build's output free of make's directory chatter.
 CMAKE_BUILD = env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL cmake --build $(BUILD) -j $(JOBS)
 
-.PHONY: demo test configure deps clean
+.PHONY: demo test paper configure deps clean
 
 deps:
 	@scripts/install-deps.sh
@@ -21,6 +22,10 @@ demo: configure
 test: configure
 	@$(CMAKE_BUILD)
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+paper: configure
+	@$(CMAKE_BUILD) --target hystbench
+	@benchmarks/paper.sh $(BUILD)/hystbench
 
 clean:
 	@rm -rf $(BUILD)

@@ -30,6 +30,7 @@ struct DiagnoseOptions {
   double heldout_gain = 0.01;
   // Global restarts of every extended model that compete with its warm
   // refit: a fit stuck in a poor basin can hide what an effect would give.
+  // Skipped when the current residual is white and uncorrelated with the input.
   int candidate_restarts = 1;
   std::string u_unit, y_unit;  // for the evidence sentences and the breakdowns
 
