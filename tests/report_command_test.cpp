@@ -153,6 +153,19 @@ TEST_F(ReportCommand, SeveralFoldersNeedOut) {
   EXPECT_TRUE(contains(r.output, "--out")) << r.output;
 }
 
+TEST_F(ReportCommand, WithoutATargetTheEcdfIsSkippedWithANote) {
+  std::string text = experiment_json(400);
+  text.erase(text.find(R"(, "target": 1e-2)"), std::string(R"(, "target": 1e-2)").size());
+  std::ofstream(*dir_ / "no_target.json") << text;
+  const auto r = hystbench("run " + path("no_target.json") + " --trial-range 0:2 --out " +
+                           path("no_target"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "No runtime ECDF: no target fitness is known")) << r.output;
+  EXPECT_FALSE(fs::exists(*dir_ / "no_target" / "ecdf.gp"));
+  EXPECT_TRUE(fs::exists(*dir_ / "no_target" / "boxplot.gp"));
+  EXPECT_TRUE(contains(read(*dir_ / "no_target" / "stats.md"), "No target fitness is known"));
+}
+
 TEST_F(ReportCommand, RunRejectsABadTrialRange) {
   for (const char* range : {"3:2", "0:7", "a:b", "4"}) {
     const auto r = hystbench("run " + path("experiment.json") + " --trial-range " + range +
