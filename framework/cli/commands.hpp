@@ -19,5 +19,6 @@ Action add_fit_command(CLI::App& app);
 Action add_compare_command(CLI::App& app);
 Action add_diagnose_command(CLI::App& app);
 Action add_discover_command(CLI::App& app);
+Action add_report_command(CLI::App& app);
 
 }  // namespace hystbench::cli

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
   for (auto add : {hystbench::cli::add_list_command, hystbench::cli::add_run_command,
                    hystbench::cli::add_simulate_command, hystbench::cli::add_fit_command,
                    hystbench::cli::add_compare_command, hystbench::cli::add_diagnose_command,
-                   hystbench::cli::add_discover_command}) {
+                   hystbench::cli::add_discover_command,
+                   hystbench::cli::add_report_command}) {
     auto action = add(app);
     commands.emplace_back(app.get_subcommands({}).back(), action);
   }

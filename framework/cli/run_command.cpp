@@ -9,15 +9,17 @@
 #include "framework/core/registry.hpp"
 #include "framework/harness/campaign.hpp"
 #include "framework/harness/progress.hpp"
+#include "framework/harness/trial_range.hpp"
 #include "framework/io/measurement.hpp"
 #include "framework/io/trial_log.hpp"
 #include "framework/report/results_folder.hpp"
+#include "framework/report/trial_statistics.hpp"
 
 namespace hystbench::cli {
 namespace {
 
 struct RunOptions {
-  std::string experiment, out, columns;
+  std::string experiment, out, columns, trial_range, reference;
   int threads = 0;
   long trials = 0;
   long long seed = -1;
@@ -54,22 +56,27 @@ void run(const RunOptions& o) {
   if (o.trials > 0) experiment.trials = o.trials;
   if (o.seed >= 0) experiment.seed = static_cast<std::uint64_t>(o.seed);
   if (!o.columns.empty()) experiment.problem["columns"] = ColumnMap::parse(o.columns).to_json();
+  const TrialRange range = o.trial_range.empty()
+                               ? TrialRange{0, experiment.trials}
+                               : parse_trial_range(o.trial_range, experiment.trials, "--trial-range");
+  check_reference(experiment, o.reference);
   const auto problem = make_problem(experiment.problem, experiment.base_dir);
   const std::filesystem::path dir = o.out.empty() ? "out/" + experiment.name : o.out;
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 
   prepare_output_folder(dir, o.force);
   TrialLog log(dir / "trials.jsonl");
-  Progress progress(experiment.trials * long(experiment.algorithms.size()), stderr_is_terminal());
+  Progress progress(range.size() * long(experiment.algorithms.size()), stderr_is_terminal());
   std::cerr << "Running " << experiment.name << ": " << experiment.algorithms.size() << " algorithm(s) x "
-            << experiment.trials << " trials on " << problem->name() << ", " << threads << " thread(s)\n";
+            << range.size() << " trials on " << problem->name() << ", " << threads << " thread(s)\n";
   const auto results = run_campaign(*problem, experiment,
                                     {threads, [&](const TrialResult& r) {
                                        log.append(r);
                                        progress.trial_done(r);
-                                     }});
+                                     },
+                                     range});
   progress.finish();
-  print_outcome(dir, write_report(dir, experiment, *problem, results, threads));
+  print_outcome(dir, write_report(dir, experiment, *problem, results, threads, o.reference));
 }
 
 }  // namespace
@@ -87,6 +94,12 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "override the experiment's seed")->check(CLI::NonNegativeNumber);
   cmd->add_option("--columns", o->columns,
                   "data columns holding t, u, y (and segment), e.g. t=t_s,u=u_N,y=y_m");
+  cmd->add_option("--trial-range", o->trial_range,
+                  "run only trials FROM to TO-1 (0-based, e.g. 0:5) of the experiment, with the "
+                  "seeds they have in the full run; merge slices with `hystbench report`");
+  cmd->add_option("--reference", o->reference,
+                  "label of the algorithm the rank-sum marks compare against (default: the one "
+                  "with the lowest median final fitness)");
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {

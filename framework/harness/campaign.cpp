@@ -12,15 +12,18 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
                                                    const Experiment& experiment,
                                                    const CampaignOptions& options) {
   const int algorithms = static_cast<int>(experiment.algorithms.size());
-  const long tasks = algorithms * experiment.trials;
+  const TrialRange range =
+      options.trials.size() > 0 ? options.trials : TrialRange{0, experiment.trials};
+  const long per_algorithm = range.size();
+  const long tasks = algorithms * per_algorithm;
   std::vector<std::vector<TrialResult>> results(algorithms,
-                                                std::vector<TrialResult>(experiment.trials));
+                                                std::vector<TrialResult>(per_algorithm));
   std::exception_ptr callback_error;
 
   #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
   for (long task = 0; task < tasks; ++task) {
-    const int a = static_cast<int>(task / experiment.trials);
-    const long trial = task % experiment.trials;
+    const int a = static_cast<int>(task / per_algorithm);
+    const long trial = range.first + task % per_algorithm;
     TrialResult r = run_trial(problem, experiment, a, trial);
     #pragma omp critical(hystbench_trial_done)
     {
@@ -30,7 +33,7 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
       } catch (...) {
         callback_error = std::current_exception();
       }
-      results[a][trial] = std::move(r);
+      results[a][trial - range.first] = std::move(r);
     }
   }
   if (callback_error) std::rethrow_exception(callback_error);

@@ -5,6 +5,7 @@
 
 #include "framework/core/problem.hpp"
 #include "framework/harness/experiment.hpp"
+#include "framework/harness/trial_range.hpp"
 #include "framework/harness/trial_result.hpp"
 
 namespace hystbench {
@@ -14,9 +15,12 @@ struct CampaignOptions {
   // Called once per finished trial, one call at a time, in finishing order
   // (which varies with threads; nothing numeric may depend on it).
   std::function<void(const TrialResult&)> on_trial_done;
+  // Which trials to run; all of them when empty (size 0).
+  TrialRange trials;
 };
 
-// Results grouped per algorithm, each group in trial order: independent of
+// Results grouped per algorithm, each group in trial order (only the trials
+// of options.trials when it is set): independent of
 // thread count and scheduling because every trial has its own derived seed.
 std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
                                                    const Experiment& experiment,

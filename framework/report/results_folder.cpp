@@ -1,12 +1,16 @@
 #include "framework/report/results_folder.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/convergence.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/provenance.hpp"
+#include "framework/report/runtime_figures.hpp"
+#include "framework/report/stats_tables.hpp"
 #include "framework/report/tables.hpp"
+#include "framework/report/trial_statistics.hpp"
 
 namespace hystbench {
 namespace {
@@ -17,9 +21,18 @@ std::optional<double> noise_floor_of(const Problem& problem) {
   return std::nullopt;
 }
 
-ReportContext report_context(const Experiment& e, const Problem& problem) {
-  ReportContext ctx{e.name, problem.name(), describe_budget(e.budget), e.trials, e.seed,
-                    noise_floor_of(problem), "", ""};
+// The trials present, not the experiment's count: a results folder may hold
+// one slice of the trials (run --trial-range).
+long trials_per_algorithm(const std::vector<std::vector<TrialResult>>& results) {
+  std::size_t most = 0;
+  for (const auto& r : results) most = std::max(most, r.size());
+  return static_cast<long>(most);
+}
+
+ReportContext report_context(const Experiment& e, const Problem& problem,
+                             const std::vector<std::vector<TrialResult>>& results) {
+  ReportContext ctx{e.name,  problem.name(),          describe_budget(e.budget),
+                    trials_per_algorithm(results), e.seed, noise_floor_of(problem), "", ""};
   if (const auto* model = dynamic_cast<const SignalModelProblem*>(&problem)) {
     ctx.input_unit = model->input_unit();
     ctx.output_unit = model->output_unit();
@@ -41,7 +54,12 @@ nlohmann::json summary_json(const Experiment& e, const Problem& problem,
                             const std::vector<AlgorithmSummary>& summaries, int threads) {
   nlohmann::json algs = nlohmann::json::array();
   for (const auto& s : summaries) algs.push_back(s.to_json());
+  // experiment_dir: where relative paths of the problem resolve, so that
+  // `hystbench report` can rebuild the problem from anywhere.
+  std::error_code ec;
+  const auto experiment_dir = std::filesystem::absolute(e.base_dir, ec);
   return {{"experiment", e.to_json()},
+          {"experiment_dir", experiment_dir.lexically_normal().string()},
           {"problem", problem.describe()},
           {"algorithms", algs},
           {"provenance", provenance(threads, e.seed)}};
@@ -84,12 +102,15 @@ std::string describe_budget(const Budget& b) {
 
 WrittenReport write_report(const std::filesystem::path& dir, const Experiment& experiment,
                            const Problem& problem,
-                           const std::vector<std::vector<TrialResult>>& results, int threads) {
+                           const std::vector<std::vector<TrialResult>>& results, int threads,
+                           const std::string& reference) {
   WrittenReport out;
-  const ReportContext ctx = report_context(experiment, problem);
+  const ReportContext ctx = report_context(experiment, problem, results);
   out.summaries = summarize_all(experiment, problem, results);
   write_file_atomic(dir / "summary.json", summary_json(experiment, problem, out.summaries, threads).dump(2) + "\n");
   write_tables(dir, out.summaries, ctx);
+  const auto statistics = campaign_statistics(experiment, results, reference, ctx.noise_floor);
+  write_stats_tables(dir, statistics, ctx);
 
   std::vector<ConvergenceCurve> curves;
   for (std::size_t a = 0; a < results.size(); ++a)
@@ -97,11 +118,20 @@ WrittenReport write_report(const std::filesystem::path& dir, const Experiment& e
   write_convergence_csv(dir / "convergence.csv", curves);
 
   std::vector<std::filesystem::path> scripts{write_convergence_figure(dir, curves, ctx)};
+  scripts.push_back(write_boxplot_figure(dir, experiment, results, ctx));
+  if (const auto ecdf = write_ecdf_figure(dir, experiment, results, statistics.target, ctx))
+    scripts.push_back(*ecdf);
   const auto fits = fit_figures(dir, problem, out.summaries, ctx);
   scripts.insert(scripts.end(), fits.begin(), fits.end());
   out.figures = render_figures(dir, scripts, out.note);
-  for (const char* f : {"summary.json", "trials.jsonl", "table.md", "table.tex", "table.csv", "convergence.csv"})
+  if (!statistics.target)
+    out.note += std::string(out.note.empty() ? "" : "\n") +
+                "No runtime ECDF: no target fitness is known (set budget.target, or use data "
+                "whose noise floor is known).";
+  for (const char* f : {"summary.json", "trials.jsonl", "table.md", "table.tex", "table.csv",
+                        "stats.md", "stats.tex", "stats.csv", "convergence.csv", "boxplot.csv"})
     out.files.push_back(dir / f);
+  if (statistics.target) out.files.push_back(dir / "ecdf.csv");
   return out;
 }
 

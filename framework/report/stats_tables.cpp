@@ -1,0 +1,187 @@
+#include "framework/report/stats_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "framework/core/text.hpp"
+#include "framework/io/atomic_file.hpp"
+#include "framework/io/csv_format.hpp"
+#include "framework/report/table_format.hpp"
+
+namespace hystbench {
+namespace {
+
+using namespace table;
+
+std::string percent(double fraction, Format f) {
+  return std::to_string(std::lround(100 * fraction)) + (f == Format::Latex ? "\\%" : " %");
+}
+
+std::string mark_cell(const AlgorithmStatistics& r, Format f) {
+  if (r.reference) return "ref.";
+  if (r.mark == '-') return f == Format::Latex ? "$-$" : "-";
+  return std::string(1, r.mark);
+}
+
+std::vector<std::string> header_cells(Format f) {
+  const bool md = f == Format::Markdown;
+  std::vector<std::string> cells{"Algorithm", "Mark", md ? "p_Holm" : "$p_{\\mathrm{Holm}}$",
+                                 "Success", "ERT"};
+  for (double q : kSnapshotFractions)
+    cells.push_back(md ? "f@" + percent(q, f) : "$f_{" + percent(q, f) + "}$");
+  return cells;
+}
+
+// The bold cell of a column: the lowest value, or the highest for the
+// success rate. NaN (no value) is never bold.
+double best_of(const std::vector<AlgorithmStatistics>& rows,
+               const std::function<double(const AlgorithmStatistics&)>& value, bool highest) {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& r : rows) {
+    const double v = value(r);
+    if (std::isnan(v)) continue;
+    if (std::isnan(best) || (highest ? v > best : v < best)) best = v;
+  }
+  return best;
+}
+
+std::string maybe_bold(const std::string& text, double v, double best, Format f) {
+  return !std::isnan(v) && v == best ? bold(text, f) : text;
+}
+
+std::vector<std::string> row_cells(const AlgorithmStatistics& r, const CampaignStatistics& s,
+                                   Format f) {
+  const auto success = [](const AlgorithmStatistics& x) { return x.success_rate; };
+  const auto ert = [](const AlgorithmStatistics& x) { return x.ert; };
+  std::vector<std::string> cells{escape(r.label, f), mark_cell(r, f),
+                                 std::isnan(r.p_holm) ? non_finite(r.p_holm, f)
+                                                      : format_fitness(r.p_holm, f)};
+  const std::string rate = std::isnan(r.success_rate)
+                               ? non_finite(r.success_rate, f)
+                               : std::to_string(r.successes) + "/" + std::to_string(r.trials);
+  cells.push_back(maybe_bold(rate, r.success_rate, best_of(s.rows, success, true), f));
+  cells.push_back(maybe_bold(format_count(r.ert, f), r.ert, best_of(s.rows, ert, false), f));
+  for (std::size_t i = 0; i < r.snapshot_medians.size(); ++i) {
+    const auto at = [i](const AlgorithmStatistics& x) { return x.snapshot_medians[i]; };
+    const double v = r.snapshot_medians[i];
+    cells.push_back(maybe_bold(format_fitness(v, f), v, best_of(s.rows, at, false), f));
+  }
+  return cells;
+}
+
+// "+/=/-" counts of the marks, printed under the table (§10.2).
+std::string mark_counts(const CampaignStatistics& s) {
+  int plus = 0, same = 0, minus = 0;
+  for (const auto& r : s.rows) {
+    if (r.reference) continue;
+    (r.mark == '+' ? plus : r.mark == '-' ? minus : same) += 1;
+  }
+  return std::to_string(plus) + "/" + std::to_string(same) + "/" + std::to_string(minus);
+}
+
+std::string run_sentence(const ReportContext& ctx, Format f) {
+  const bool md = f == Format::Markdown;
+  const auto name = [&](const std::string& s) {
+    return md ? "`" + s + "`" : "\\texttt{" + escape_latex(s) + "}";
+  };
+  std::string text = "Experiment " + name(ctx.experiment) + ", data " + name(ctx.problem) + ": " +
+                     std::to_string(ctx.trials) + " trials per algorithm";
+  if (!ctx.budget.empty()) text += ", budget " + escape(ctx.budget, f);
+  return text + ", seed " + std::to_string(ctx.seed) + ".";
+}
+
+std::string mark_sentence(const CampaignStatistics& s, Format f) {
+  const bool tex = f == Format::Latex;
+  const std::string minus = tex ? "$-$" : "-";
+  return " Mark: two-sided Wilcoxon rank-sum test of the final fitness of the reference " +
+         escape(s.reference, f) +
+         (s.reference_chosen ? " (chosen by the user)" : " (the lowest median final fitness)") +
+         " against each algorithm at alpha = 0.05, Holm-corrected over the " +
+         std::to_string(s.rows.size() - 1) + (s.rows.size() == 2 ? " comparison" : " comparisons") +
+         ": + the reference is significantly "
+         "better, " + minus + " significantly worse, = no significant difference; " +
+         (tex ? "$p_{\\mathrm{Holm}}$" : "p_Holm") + " is the adjusted p-value; counts " + mark_counts(s) + " (+/=/" + minus + ").";
+}
+
+std::string runtime_sentence(const CampaignStatistics& s, Format f) {
+  std::string text;
+  if (s.target)
+    text = " Success: trials that reached the target fitness " + format_fitness(*s.target, f) +
+           " (" + s.target_origin + "); ERT: expected running time to it in evaluations "
+           "(sum of the runtimes over the successes; infinite without one).";
+  else
+    text = " No target fitness is known (no budget target, no noise floor): no success rate "
+           "or ERT.";
+  std::string fractions;
+  for (double q : kSnapshotFractions)
+    fractions += (fractions.empty() ? "" : ", ") + percent(q, f);
+  if (s.budget)
+    text += " f@q: median best-so-far fitness after " + fractions + " of the " +
+            std::to_string(*s.budget) + "-evaluation budget.";
+  else
+    text += " No evaluation budget: no fixed-budget values.";
+  return text + " Best value per column in bold.";
+}
+
+std::string caption(const CampaignStatistics& s, const ReportContext& ctx, Format f) {
+  return run_sentence(ctx, f) + mark_sentence(s, f) + runtime_sentence(s, f);
+}
+
+}  // namespace
+
+std::string stats_markdown(const CampaignStatistics& s, const ReportContext& ctx) {
+  std::string out = "**Table.** " + caption(s, ctx, Format::Markdown) + "\n\n";
+  const auto header = header_cells(Format::Markdown);
+  out += "| " + join(header, " | ") + " |\n|:---";
+  for (std::size_t i = 1; i < header.size(); ++i) out += "|---:";
+  out += "|\n";
+  for (const auto& r : s.rows) out += "| " + join(row_cells(r, s, Format::Markdown), " | ") + " |\n";
+  return out + "\n+/=/-: " + mark_counts(s) + "\n";
+}
+
+std::string stats_latex(const CampaignStatistics& s, const ReportContext& ctx) {
+  const auto header = header_cells(Format::Latex);
+  std::string out = "% Requires \\usepackage{booktabs}.\n\\begin{table}[htbp]\n  \\centering\n";
+  out += "  \\caption{" + caption(s, ctx, Format::Latex) + "}\n";
+  out += "  \\label{tab:" + label_key(ctx.experiment) + "-stats}\n";
+  out += "  \\footnotesize\n  \\setlength{\\tabcolsep}{3pt}\n";
+  out += "  \\begin{tabular}{l" + std::string(header.size() - 1, 'r') + "}\n    \\toprule\n";
+  out += "    " + join(header, " & ") + " \\\\\n    \\midrule\n";
+  for (const auto& r : s.rows) out += "    " + join(row_cells(r, s, Format::Latex), " & ") + " \\\\\n";
+  out += "    \\midrule\n    $+/=/-$ & \\multicolumn{" + std::to_string(header.size() - 1) +
+         "}{l}{" + mark_counts(s) + "} \\\\\n";
+  out += "    \\bottomrule\n  \\end{tabular}\n\\end{table}\n";
+  return out;
+}
+
+std::string stats_csv(const CampaignStatistics& s) {
+  std::string out = "algorithm,reference,mark,p_holm,successes,trials,success_rate,ert";
+  for (double q : kSnapshotFractions)
+    out.append(",f_at_").append(std::to_string(std::lround(100 * q))).append("pct");
+  out += '\n';
+  const auto cell = [&out](const std::string& text) { out.append(",").append(text); };
+  for (const auto& r : s.rows) {
+    out += csv_field(r.label);
+    cell(r.reference ? "1" : "0");
+    cell(r.reference ? "" : std::string(1, r.mark));
+    cell(csv_number(r.p_holm));
+    cell(std::isnan(r.success_rate) ? "" : std::to_string(r.successes));
+    cell(std::to_string(r.trials));
+    cell(csv_number(r.success_rate));
+    cell(csv_number(r.ert));
+    for (double v : r.snapshot_medians) cell(csv_number(v));
+    out += '\n';
+  }
+  return out;
+}
+
+void write_stats_tables(const std::filesystem::path& dir, const CampaignStatistics& s,
+                        const ReportContext& ctx) {
+  write_file_atomic(dir / "stats.md", stats_markdown(s, ctx));
+  write_file_atomic(dir / "stats.tex", stats_latex(s, ctx));
+  write_file_atomic(dir / "stats.csv", stats_csv(s));
+}
+
+}  // namespace hystbench

@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "framework/core/error.hpp"
+#include "framework/report/results_merge.hpp"
+#include "framework/report/stats_tables.hpp"
+#include "framework/report/trial_statistics.hpp"
+
+namespace hystbench {
+namespace {
+
+Experiment experiment(const nlohmann::json& budget) {
+  return Experiment::from_json(
+      {{"name", "t"},
+       {"problem", {{"type", "function"}, {"name", "sphere"}, {"dimension", 2}}},
+       {"budget", budget},
+       {"trials", 10},
+       {"algorithms",
+        {{{"name", "de"}, {"label", "A_1"}}, {{"name", "de"}, {"label", "B"}},
+         {{"name", "de"}, {"label", "C"}}}}},
+      "test");
+}
+
+// Trial k of algorithm a reaches `level + k` after 50 evaluations and
+// `final + k * 0.001` after 100.
+std::vector<TrialResult> trials(int a, double level, double final, int n = 10) {
+  std::vector<TrialResult> out;
+  for (int k = 0; k < n; ++k) {
+    TrialResult r;
+    r.algorithm_index = a;
+    r.trial = k;
+    r.evaluations = 100;
+    r.best = final + k * 0.001;
+    r.trace = {{1, 1000.0}, {50, level + k}, {100, r.best}};
+    r.stop = StopReason::Evaluations;
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::vector<std::vector<TrialResult>> campaign() {
+  return {trials(0, 10, 1.0), trials(1, 10, 5.0), trials(2, 10, 1.0)};
+}
+
+TEST(CampaignStatistics, DefaultReferenceIsTheBestMedianAndMarksFollowHolm) {
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", {});
+  EXPECT_EQ(s.reference, "A_1");
+  EXPECT_FALSE(s.reference_chosen);
+  EXPECT_TRUE(s.rows[0].reference);
+  EXPECT_TRUE(std::isnan(s.rows[0].p_holm));
+  EXPECT_EQ(s.rows[1].mark, '+');  // reference clearly better than B
+  EXPECT_LT(s.rows[1].p_holm, 0.05);
+  EXPECT_EQ(s.rows[2].mark, '=');  // identical samples
+  EXPECT_DOUBLE_EQ(s.rows[2].p_holm, 1.0);
+}
+
+TEST(CampaignStatistics, ChosenReferenceSeesTheOthersBetter) {
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "B", {});
+  EXPECT_EQ(s.reference, "B");
+  EXPECT_TRUE(s.reference_chosen);
+  EXPECT_EQ(s.rows[0].mark, '-');
+  EXPECT_EQ(s.rows[2].mark, '-');
+}
+
+TEST(CampaignStatistics, UnknownReferenceNamesTheOption) {
+  try {
+    campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "Z", {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--reference Z"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CampaignStatistics, TargetFromBudgetElseNoiseFloor) {
+  EXPECT_DOUBLE_EQ(*runtime_target(experiment({{"evaluations", 100}, {"target", 0.5}}), 2.0), 0.5);
+  EXPECT_DOUBLE_EQ(*runtime_target(experiment({{"evaluations", 100}}), 2.0), 2.02);
+  EXPECT_FALSE(runtime_target(experiment({{"evaluations", 100}}), std::nullopt));
+}
+
+TEST(CampaignStatistics, SuccessRateErtAndSnapshots) {
+  // Target 1.0055: A and C reach it in trials 0..5 at evaluation 100.
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", 1.0055 / 1.01);
+  ASSERT_TRUE(s.target);
+  EXPECT_EQ(s.rows[0].successes, 6);
+  EXPECT_DOUBLE_EQ(s.rows[0].success_rate, 0.6);
+  EXPECT_DOUBLE_EQ(s.rows[0].ert, 1000.0 / 6);
+  EXPECT_TRUE(std::isinf(s.rows[1].ert));
+  // At 10 evaluations every trial is at 1000, at 50 at 10 + k (median 14.5).
+  EXPECT_DOUBLE_EQ(s.rows[0].snapshot_medians[0], 1000.0);
+  EXPECT_DOUBLE_EQ(s.rows[0].snapshot_medians[1], 14.5);
+  EXPECT_NEAR(s.rows[0].snapshot_medians[2], 1.0045, 1e-12);
+}
+
+TEST(CampaignStatistics, NoTargetNoBudgetLeaveColumnsEmpty) {
+  const auto s = campaign_statistics(experiment({{"iterations", 5}}), campaign(), "", {});
+  EXPECT_TRUE(std::isnan(s.rows[0].ert));
+  EXPECT_TRUE(std::isnan(s.rows[0].snapshot_medians[0]));
+  ReportContext ctx;
+  ctx.experiment = "t";
+  const std::string md = stats_markdown(s, ctx);
+  EXPECT_NE(md.find("No target fitness is known"), std::string::npos) << md;
+  EXPECT_NE(md.find("| B | + |"), std::string::npos) << md;
+}
+
+TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", 1.0);
+  ReportContext ctx;
+  ctx.experiment = "exp_1";
+  const std::string tex = stats_latex(s, ctx);
+  for (const char* part : {"\\toprule", "\\midrule", "\\bottomrule", "A\\_1 & ref.", "\\textbf{",
+                           "\\multicolumn{7}{l}{1/1/0}", "\\label{tab:exp_1-stats}"})
+    EXPECT_NE(tex.find(part), std::string::npos) << part << " missing from:\n" << tex;
+  EXPECT_EQ(tex.find("A_1"), std::string::npos) << "unescaped underscore";
+  EXPECT_EQ(tex.find("|"), std::string::npos) << "booktabs tables have no vertical rules";
+}
+
+TEST(FirstDifference, NamesThePathOfTheFirstDifferingField) {
+  const nlohmann::json a = {{"budget", {{"evaluations", 400}}}, {"algorithms", {{{"np", 1}}}}};
+  nlohmann::json b = a;
+  EXPECT_EQ(first_difference(a, b, "experiment"), "");
+  b["budget"]["evaluations"] = 500;
+  EXPECT_EQ(first_difference(a, b, "experiment"), "experiment.budget.evaluations");
+  b = a;
+  b["algorithms"][0]["np"] = 2;
+  EXPECT_EQ(first_difference(a, b, "experiment"), "experiment.algorithms[0].np");
+  b = a;
+  b["seed"] = 1;
+  EXPECT_EQ(first_difference(a, b, "experiment"), "experiment.seed");
+}
+
+}  // namespace
+}  // namespace hystbench
