@@ -392,12 +392,7 @@ TEST(ComparisonReport, VerdictsFollowTheNumbers) {
 
 bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using hystbench::test_support::read;
 
 TEST(ComparisonReport, WritesMetricsReportAndFigures) {
   TempDir tmp;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "tests/run_command.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -18,16 +19,9 @@ namespace {
 
 using hystbench::test_support::hystbench;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using hystbench::test_support::read;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using hystbench::test_support::contains;
 
 // Two algorithms, six short trials on the sphere; the budget target makes
 // the success rate and ERT columns meaningful.
