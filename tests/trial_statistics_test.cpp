@@ -116,6 +116,16 @@ TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
   EXPECT_EQ(tex.find("|"), std::string::npos) << "booktabs tables have no vertical rules";
 }
 
+TEST(StatsMarkdown, AColumnWhoseValuesAllTieHasNoBoldCell) {
+  // No trial reaches a negative target: every Success cell is 0/n, ERT infinite.
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", -1.0);
+  ReportContext ctx;
+  ctx.experiment = "t";
+  const std::string md = stats_markdown(s, ctx);
+  EXPECT_EQ(md.find("**0/"), std::string::npos) << md;
+  EXPECT_EQ(md.find("**∞**"), std::string::npos) << md;
+}
+
 TEST(FirstDifference, NamesThePathOfTheFirstDifferingField) {
   const nlohmann::json a = {{"budget", {{"evaluations", 400}}}, {"algorithms", {{{"np", 1}}}}};
   nlohmann::json b = a;

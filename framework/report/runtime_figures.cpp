@@ -1,5 +1,7 @@
 #include "framework/report/runtime_figures.hpp"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -63,16 +65,23 @@ std::string ecdf_plot(const Experiment& e) {
   return plot;
 }
 
+// The target in a title: enough digits to tell it from the noise floor.
+std::string four_digits(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
 std::string ecdf_settings(const ReportContext& ctx, double target) {
   return "set title " + gnuplot::quoted("Runtime ECDF — " + ctx.experiment + " (" + ctx.problem + ")") +
          ".\"\\n\"." +
          gnuplot::quoted("fraction of " + std::to_string(ctx.trials) +
-                         " trials with best fitness <= " + gnuplot::number(target)) +
+                         " trials with best fitness <= " + four_digits(target)) +
          " noenhanced\n"
          "set xlabel \"Function evaluations\"\nset ylabel \"Fraction of trials at the target\"\n"
-         "set logscale x\nset format x \"10^{%L}\"\nset xrange [1:*]\nset autoscale xfixmax\n"
+         "set logscale x\nset format x \"10^{%L}\"\nset autoscale xfix\nset offsets graph 0.05, graph 0.02, 0, 0\n"
          "set yrange [0:1.02]\nset grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-         "set key top left opaque box spacing 1.2 samplen 2.5\n";
+         "set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1\n";
 }
 
 // Final fitness of the trials whose optimizer did not throw.

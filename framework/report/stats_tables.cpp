@@ -35,16 +35,20 @@ std::vector<std::string> header_cells(Format f) {
 }
 
 // The bold cell of a column: the lowest value, or the highest for the
-// success rate. NaN (no value) is never bold.
+// success rate. NaN (no value) is never bold, and a column whose values all
+// tie (0/30 everywhere) has no best: NaN.
 double best_of(const std::vector<AlgorithmStatistics>& rows,
                const std::function<double(const AlgorithmStatistics&)>& value, bool highest) {
-  double best = std::numeric_limits<double>::quiet_NaN();
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  double best = none;
+  bool all_tie = true;
   for (const auto& r : rows) {
     const double v = value(r);
     if (std::isnan(v)) continue;
+    if (!std::isnan(best) && v != best) all_tie = false;
     if (std::isnan(best) || (highest ? v > best : v < best)) best = v;
   }
-  return best;
+  return all_tie && rows.size() > 1 ? none : best;
 }
 
 std::string maybe_bold(const std::string& text, double v, double best, Format f) {
