@@ -114,7 +114,8 @@ std::string runtime_sentence(const CampaignStatistics& s, Format f) {
   if (s.target)
     text = " Success: trials that reached the target fitness " + format_fitness(*s.target, f) +
            " (" + s.target_origin + "); ERT: expected running time to it in evaluations "
-           "(sum of the runtimes over the successes; infinite without one).";
+           "(the evaluations of all trials, each up to the target when it reached it, divided by "
+           "the number of successes; infinite without one).";
   else
     text = " No target fitness is known (no budget target, no noise floor): no success rate "
            "or ERT.";
