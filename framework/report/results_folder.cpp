@@ -50,16 +50,21 @@ std::vector<AlgorithmSummary> summarize_all(const Experiment& e, const Problem& 
   return out;
 }
 
-nlohmann::json summary_json(const Experiment& e, const Problem& problem,
+nlohmann::json summary_json(const std::filesystem::path& dir, const Experiment& e,
+                            const Problem& problem,
                             const std::vector<AlgorithmSummary>& summaries, int threads) {
   nlohmann::json algs = nlohmann::json::array();
   for (const auto& s : summaries) algs.push_back(s.to_json());
   // experiment_dir: where relative paths of the problem resolve, so that
-  // `hystbench report` can rebuild the problem from anywhere.
+  // `hystbench report` can rebuild the problem. Relative to the results
+  // folder: a folder committed with its repository keeps working after a
+  // clone, and no path of the machine that ran it is written.
   std::error_code ec;
-  const auto experiment_dir = std::filesystem::absolute(e.base_dir, ec);
+  const auto base = std::filesystem::absolute(e.base_dir, ec).lexically_normal();
+  const auto here = std::filesystem::absolute(dir, ec).lexically_normal();
+  const auto experiment_dir = base.lexically_relative(here);
   return {{"experiment", e.to_json()},
-          {"experiment_dir", experiment_dir.lexically_normal().string()},
+          {"experiment_dir", (experiment_dir.empty() ? base : experiment_dir).string()},
           {"problem", problem.describe()},
           {"algorithms", algs},
           {"provenance", provenance(threads, e.seed)}};
@@ -107,7 +112,7 @@ WrittenReport write_report(const std::filesystem::path& dir, const Experiment& e
   WrittenReport out;
   const ReportContext ctx = report_context(experiment, problem, results);
   out.summaries = summarize_all(experiment, problem, results);
-  write_file_atomic(dir / "summary.json", summary_json(experiment, problem, out.summaries, threads).dump(2) + "\n");
+  write_file_atomic(dir / "summary.json", summary_json(dir, experiment, problem, out.summaries, threads).dump(2) + "\n");
   write_tables(dir, out.summaries, ctx);
   const auto statistics = campaign_statistics(experiment, results, reference, ctx.noise_floor);
   write_stats_tables(dir, statistics, ctx);

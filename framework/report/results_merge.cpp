@@ -35,7 +35,9 @@ void require_same(const ResultsFolder& first, const ResultsFolder& other) {
 Experiment experiment_of(const ResultsFolder& folder) {
   Experiment e = Experiment::from_json(folder.summary["experiment"],
                                        (folder.dir / "summary.json").string() + " experiment");
-  e.base_dir = folder.summary.value("experiment_dir", folder.dir.string());
+  // Written relative to the folder (absolute by older versions).
+  const std::filesystem::path base = folder.summary.value("experiment_dir", std::string("."));
+  e.base_dir = (base.is_absolute() ? base : folder.dir / base).lexically_normal().string();
   return e;
 }
 
