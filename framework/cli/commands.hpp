@@ -3,6 +3,7 @@
 // returns the function that runs it.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace hystbench::cli {
 
@@ -11,6 +12,9 @@ using Action = std::function<void()>;
 // Adds --plugin PATH.so (repeatable) to a subcommand; the returned action
 // loads the libraries, to be called before anything looks at the registry.
 Action add_plugin_option(CLI::App& command);
+// Adds --reference LABEL, the algorithm the statistics table compares
+// against (`run` and `report` share it).
+void add_reference_option(CLI::App& command, std::string& reference);
 
 Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app);

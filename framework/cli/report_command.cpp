@@ -104,9 +104,7 @@ Action add_report_command(CLI::App& app) {
   cmd->add_option("folders", o->folders, "results folders of `hystbench run`")->required();
   cmd->add_option("--out", o->out,
                   "folder of the report (default: the folder given; required for several)");
-  cmd->add_option("--reference", o->reference,
-                  "label of the algorithm the rank-sum marks compare against (default: the one "
-                  "with the lowest median final fitness)");
+  add_reference_option(*cmd, o->reference);
   cmd->add_option("--base-dir", o->base_dir,
                   "folder that relative data paths of the experiment resolve against (default: "
                   "the experiment file's folder recorded by `run`)");

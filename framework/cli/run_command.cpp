@@ -97,9 +97,7 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--trial-range", o->trial_range,
                   "run only trials FROM to TO-1 (0-based, e.g. 0:5) of the experiment, with the "
                   "seeds they have in the full run; merge slices with `hystbench report`");
-  cmd->add_option("--reference", o->reference,
-                  "label of the algorithm the rank-sum marks compare against (default: the one "
-                  "with the lowest median final fitness)");
+  add_reference_option(*cmd, o->reference);
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
