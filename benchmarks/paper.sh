@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates results/paper/: the seed papers' comparisons on the bundled
 # data, each experiment's tables, statistics and figures in a folder of its
-# own (see results/paper/README.md for what each one is).
+# own, and a Friedman ranking over six simulated data sets (see
+# results/paper/README.md for what each one is).
 #
 #   benchmarks/paper.sh [HYSTBENCH_EXE] [OUT_DIR]
 #
@@ -31,4 +32,23 @@ for run in "${runs[@]}"; do
   echo "== $name (reference $reference)"
   "$exe" run "benchmarks/experiments/$name.json" --out "$out/$name" --reference "$reference" --force
 done
+
+# Friedman ranking over several data sets: each excitation at two noise
+# levels, simulated from the bundled data's true parameters, one run each.
+friedman="$out/friedman"
+params=problems/hammerstein/data/default.params.json
+seed=11
+for excitation in multisine sweep steps; do
+  for noise in 1 3; do
+    data="$friedman/data/${excitation}_${noise}pct.csv"
+    mkdir -p "$friedman/data"
+    "$exe" simulate --params "$params" --excitation "benchmarks/experiments/friedman/$excitation.excitation.json" \
+      --noise "0.0$noise" --seed "$seed" --input-unit V --output-unit µm --out "$data" >/dev/null
+    seed=$((seed + 1))
+    echo "== friedman on ${excitation}_${noise}pct"
+    "$exe" run benchmarks/experiments/friedman.json --data "$data" \
+      --out "$friedman/${excitation}_${noise}pct" --force >/dev/null
+  done
+done
+"$exe" rank "$friedman"/{multisine,sweep,steps}_{1,3}pct --out "$friedman" --force
 echo "results in $out"

@@ -1,5 +1,6 @@
 #include <omp.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -19,7 +20,7 @@ namespace hystbench::cli {
 namespace {
 
 struct RunOptions {
-  std::string experiment, out, columns, trial_range, reference;
+  std::string experiment, out, columns, trial_range, reference, data;
   int threads = 0;
   long trials = 0;
   long long seed = -1;
@@ -42,6 +43,22 @@ void prepare_output_folder(const std::filesystem::path& dir, bool force) {
   if (ec) throw InputError("--out " + dir.string() + ": cannot create this folder: " + ec.message());
 }
 
+// --data replaces the experiment's data file. The path is stored relative to
+// the experiment file's folder, where relative data paths resolve, so that
+// summary.json names no folder of this machine and `report` finds the file.
+void replace_data(Experiment& e, const std::string& data) {
+  namespace fs = std::filesystem;
+  if (!e.problem.contains("data"))
+    throw InputError("--data: the experiment's problem (" + e.problem.value("type", "?") +
+                     ") reads no data file");
+  if (!fs::is_regular_file(data)) throw InputError("--data " + data + ": file not found");
+  std::error_code ec;
+  const auto file = fs::absolute(data, ec).lexically_normal();
+  const auto base = fs::absolute(e.base_dir, ec).lexically_normal();
+  const auto relative = file.lexically_relative(base);
+  e.problem["data"] = (relative.empty() ? file : relative).generic_string();
+}
+
 void print_outcome(const std::filesystem::path& dir, const WrittenReport& report) {
   std::ifstream table(dir / "table.md");
   std::cout << "\n" << table.rdbuf() << "\n";
@@ -55,6 +72,7 @@ void run(const RunOptions& o) {
   Experiment experiment = Experiment::load(o.experiment);
   if (o.trials > 0) experiment.trials = o.trials;
   if (o.seed >= 0) experiment.seed = static_cast<std::uint64_t>(o.seed);
+  if (!o.data.empty()) replace_data(experiment, o.data);
   if (!o.columns.empty()) experiment.problem["columns"] = ColumnMap::parse(o.columns).to_json();
   const TrialRange range = o.trial_range.empty()
                                ? TrialRange{0, experiment.trials}
@@ -92,6 +110,9 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--trials", o->trials, "override the experiment's number of trials")
       ->check(CLI::Range(1L, 1000000L));
   cmd->add_option("--seed", o->seed, "override the experiment's seed")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--data", o->data,
+                  "run the experiment on this data file instead of the one it names (e.g. the "
+                  "same algorithms on several data sets, ranked with `hystbench rank`)");
   cmd->add_option("--columns", o->columns,
                   "data columns holding t, u, y (and segment), e.g. t=t_s,u=u_N,y=y_m");
   cmd->add_option("--trial-range", o->trial_range,

@@ -1,0 +1,73 @@
+// `hystbench rank DIR... --out DIR [--control LABEL] [--by mean|median]`:
+// the Friedman ranking of the same algorithms over several problems or data
+// sets, one results folder of `hystbench run` per data set.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "framework/cli/commands.hpp"
+#include "framework/core/error.hpp"
+#include "framework/report/figures.hpp"
+#include "framework/report/ranking_tables.hpp"
+
+namespace hystbench::cli {
+namespace {
+namespace fs = std::filesystem;
+
+struct RankOptions {
+  std::vector<std::string> folders;
+  std::string out, control, by = "mean";
+  bool force = false;
+};
+
+void prepare_output(const fs::path& dir, bool force) {
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw InputError("--out " + dir.string() + ": exists and is not a folder");
+  if (fs::exists(dir / "ranks.md") && !force)
+    throw InputError("--out " + dir.string() + ": already holds a ranking; pass --force to "
+                     "replace it or choose another folder with --out");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir.string() + ": cannot create this folder: " + ec.message());
+}
+
+void rank(const RankOptions& o) {
+  std::vector<ResultsFolder> folders;
+  for (const auto& f : o.folders) folders.push_back(read_results_folder(f));
+  const auto statistic = o.by == "median" ? RankStatistic::Median : RankStatistic::Mean;
+  const FriedmanRanking ranking = rank_folders(folders, statistic, o.control);
+  prepare_output(o.out, o.force);
+  auto files = write_ranking(o.out, ranking);
+  std::string note;
+  const auto images = render_figures(o.out, {files.back()}, note);
+  std::ifstream table(fs::path(o.out) / "ranks.md");
+  std::cout << table.rdbuf() << "\nRanking in " << o.out << ":\n";
+  for (const auto& f : files) std::cout << "  " << f.string() << "\n";
+  for (const auto& f : images) std::cout << "  " << f.string() << "\n";
+  if (!note.empty()) std::cout << note << "\n";
+}
+
+}  // namespace
+
+Action add_rank_command(CLI::App& app) {
+  auto o = std::make_shared<RankOptions>();
+  auto* cmd = app.add_subcommand(
+      "rank", "Rank the same algorithms over several data sets or problems (one results folder "
+              "each) with the Friedman test, Nemenyi CD and Holm tests against a control");
+  cmd->add_option("folders", o->folders,
+                  "results folders of `hystbench run`, one per data set (at least 2)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", o->out, "folder for ranks.md/.tex/.csv/.json and ranks.gp")->required();
+  cmd->add_option("--control", o->control,
+                  "label of the algorithm the others are tested against (default: the best "
+                  "average rank)");
+  cmd->add_option("--by", o->by, "rank each data set by the mean or the median final fitness")
+      ->check(CLI::IsMember({"mean", "median"}))
+      ->capture_default_str();
+  cmd->add_flag("--force", o->force, "replace a ranking already in the --out folder");
+  return [o] { rank(*o); };
+}
+
+}  // namespace hystbench::cli
