@@ -93,14 +93,21 @@ TEST(CampaignStatistics, SuccessRateErtAndSnapshots) {
   EXPECT_NEAR(s.rows[0].snapshot_medians[2], 1.0045, 1e-12);
 }
 
-TEST(CampaignStatistics, NoTargetNoBudgetLeaveColumnsEmpty) {
+TEST(CampaignStatistics, NoTargetLeavesRuntimeEmptyAndIterationBudgetSnapsAtMostEvaluations) {
   const auto s = campaign_statistics(experiment({{"iterations", 5}}), campaign(), "", {});
   EXPECT_TRUE(std::isnan(s.rows[0].ert));
-  EXPECT_TRUE(std::isnan(s.rows[0].snapshot_medians[0]));
+  // Without an evaluation budget the fractions refer to the 100 evaluations
+  // every trial used: 10 % is evaluation 10, still at 1000.
+  ASSERT_TRUE(s.budget);
+  EXPECT_EQ(*s.budget, 100);
+  EXPECT_TRUE(s.budget_from_trials);
+  EXPECT_DOUBLE_EQ(s.rows[0].snapshot_medians[0], 1000.0);
+  EXPECT_DOUBLE_EQ(s.rows[0].snapshot_medians[1], 14.5);
   ReportContext ctx;
   ctx.experiment = "t";
   const std::string md = stats_markdown(s, ctx);
   EXPECT_NE(md.find("No target fitness is known"), std::string::npos) << md;
+  EXPECT_NE(md.find("of 100 evaluations, the most any trial used"), std::string::npos) << md;
   EXPECT_NE(md.find("| B | + |"), std::string::npos) << md;
 }
 

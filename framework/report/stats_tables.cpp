@@ -122,7 +122,11 @@ std::string runtime_sentence(const CampaignStatistics& s, Format f) {
   std::string fractions;
   for (double q : kSnapshotFractions)
     fractions += (fractions.empty() ? "" : ", ") + percent(q, f);
-  if (s.budget)
+  if (s.budget && s.budget_from_trials)
+    text += " f@q: median best-so-far fitness after " + fractions + " of " +
+            std::to_string(*s.budget) + " evaluations, the most any trial used (the budget " +
+            "counts iterations or time).";
+  else if (s.budget)
     text += " f@q: median best-so-far fitness after " + fractions + " of the " +
             std::to_string(*s.budget) + "-evaluation budget.";
   else

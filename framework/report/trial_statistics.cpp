@@ -1,5 +1,6 @@
 #include "framework/report/trial_statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -58,6 +59,14 @@ void add_runtime(AlgorithmStatistics& row, const std::vector<TrialResult>& trial
   row.success_rate = stats::success_rate(recs, *target);
   row.successes = std::lround(row.success_rate * double(recs.size()));
   row.ert = stats::expected_runtime(recs, *target);
+}
+
+std::optional<long> most_evaluations(const std::vector<std::vector<TrialResult>>& results) {
+  long most = 0;
+  for (const auto& trials : results)
+    for (const auto& r : trials)
+      if (!r.failed()) most = std::max(most, r.evaluations);
+  return most > 0 ? std::optional<long>(most) : std::nullopt;
 }
 
 void add_snapshots(AlgorithmStatistics& row, const std::vector<TrialResult>& trials,
@@ -132,6 +141,10 @@ CampaignStatistics campaign_statistics(const Experiment& e,
   s.target = runtime_target(e, noise_floor);
   if (s.target) s.target_origin = e.budget.target ? "budget target" : "1.01 x noise floor";
   s.budget = e.budget.evaluations;
+  if (!s.budget) {
+    s.budget = most_evaluations(results);
+    s.budget_from_trials = s.budget.has_value();
+  }
   for (std::size_t a = 0; a < results.size(); ++a) {
     AlgorithmStatistics row;
     row.label = e.algorithms[a].label;

@@ -33,7 +33,11 @@ struct CampaignStatistics {
   double alpha = 0.05;
   std::optional<double> target;    // fitness target of the runtime measures
   std::string target_origin;       // "budget target" or "1.01 x noise floor"
-  std::optional<long> budget;      // evaluation budget of the snapshots
+  // Evaluations the snapshot fractions refer to: the evaluation budget, or
+  // without one (an iteration or time budget) the most evaluations any trial
+  // used, so that the columns still compare the algorithms at equal cost.
+  std::optional<long> budget;
+  bool budget_from_trials = false;
   std::vector<AlgorithmStatistics> rows;
 };
 
