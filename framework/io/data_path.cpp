@@ -7,15 +7,18 @@ namespace hystbench {
 std::filesystem::path resolve_data_path(const std::string& name,
                                         const std::filesystem::path& base_dir,
                                         const std::string& key) {
-  const std::filesystem::path given(name);
-  if (std::filesystem::exists(given)) return given;
-  if (given.is_relative() && !base_dir.empty()) {
-    const auto beside = base_dir / given;
-    if (std::filesystem::exists(beside)) return beside;
-    throw InputError(key + " = \"" + name + "\": file not found (looked in the current folder and in " +
-                     base_dir.string() + ")");
+  namespace fs = std::filesystem;
+  const fs::path given(name);
+  if (fs::exists(given)) return given;
+  if (!given.is_relative() || base_dir.empty()) throw InputError(key + " = \"" + name + "\": file not found");
+  std::error_code ec;
+  const fs::path start = fs::absolute(base_dir, ec).lexically_normal();
+  for (fs::path dir = start;; dir = dir.parent_path()) {
+    if (fs::exists(dir / given)) return (base_dir / dir.lexically_relative(start) / given).lexically_normal();
+    if (dir == dir.parent_path()) break;
   }
-  throw InputError(key + " = \"" + name + "\": file not found");
+  throw InputError(key + " = \"" + name + "\": file not found (looked in the current folder, in " +
+                   base_dir.string() + " and in the folders above it)");
 }
 
 }  // namespace hystbench
