@@ -8,11 +8,11 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
 #include "framework/stats/descriptive.hpp"
+#include "framework/stats/runtime_measures.hpp"
 
 namespace hystbench {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 long last_evaluation(const TrialResult& r) {
   const long traced = r.trace.empty() ? 0 : r.trace.back().evaluations;
@@ -35,15 +35,6 @@ std::vector<long> log_grid(long last, int points) {
   return grid;
 }
 
-// The trace holds improvements only, so the best so far at `evaluations`
-// is the last point reached by then.
-double best_so_far(const std::vector<TracePoint>& trace, long evaluations) {
-  const auto after = std::upper_bound(
-      trace.begin(), trace.end(), evaluations,
-      [](long e, const TracePoint& p) { return e < p.evaluations; });
-  return after == trace.begin() ? kInf : std::prev(after)->best;
-}
-
 }  // namespace
 
 ConvergenceCurve convergence_curve(const std::string& label,
@@ -60,7 +51,7 @@ ConvergenceCurve convergence_curve(const std::string& label,
   curve.evaluations = log_grid(last, points);
   std::vector<double> values(ok.size());
   for (long e : curve.evaluations) {
-    for (std::size_t i = 0; i < ok.size(); ++i) values[i] = best_so_far(ok[i]->trace, e);
+    for (std::size_t i = 0; i < ok.size(); ++i) values[i] = stats::best_at(ok[i]->trace, e);
     curve.q25.push_back(stats::quantile(values, 0.25));
     curve.median.push_back(stats::quantile(values, 0.5));
     curve.q75.push_back(stats::quantile(values, 0.75));
