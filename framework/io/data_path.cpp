@@ -15,7 +15,8 @@ std::filesystem::path resolve_data_path(const std::string& name,
     throw InputError(key + " = \"" + name + "\": file not found (looked in the current folder and in " +
                      base_dir.string() + ")");
   }
-  throw InputError(key + " = \"" + name + "\": file not found");
+  throw InputError(key + " = \"" + name + "\": file not found; check the path (a relative one is "
+                   "looked up in the current folder, then beside the experiment file)");
 }
 
 }  // namespace hystbench
