@@ -2,9 +2,10 @@
 
 #include <atomic>
 #include <fstream>
-#include <mutex>
 #include <iostream>
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/interrupt_guard.hpp"
@@ -51,10 +52,9 @@ void check_output_folder(const fs::path& dir, const RunOptions& o) {
 void start_output_folder(const fs::path& dir, bool force, const nlohmann::json& identity) {
   std::error_code ec;
   const bool existed = fs::exists(dir);
-  if (force) {
-    fs::remove(dir / "trials.jsonl", ec);
-    fs::remove(dir / "campaign.json", ec);
-  }
+  // summary.json too: a forced run stopped midway must not look finished.
+  if (force)
+    for (const char* stale : {"trials.jsonl", "campaign.json", "summary.json"}) fs::remove(dir / stale, ec);
   fs::create_directories(dir, ec);
   if (ec)
     throw InputError("--out " + dir.string() + ": cannot create this folder (" + ec.message() +
@@ -77,6 +77,17 @@ std::string resume_command(const RunOptions& o, const fs::path& dir) {
   return c;
 }
 
+// What Ctrl-C prints: what is kept, and the command that carries on.
+std::string interrupted_message(const RunOptions& o, const fs::path& dir, long done, long total) {
+  const std::string kept = " trials finished and are kept in " + (dir / "trials.jsonl").string();
+  const std::string state =
+      done == total
+          ? "all " + std::to_string(total) + kept + "; the report was being written. Write it with:"
+          : std::to_string(done) + " of " + std::to_string(total) + kept +
+                "; the running ones were abandoned. Resume with:";
+  return "interrupted: " + state + "\n  " + resume_command(o, dir);
+}
+
 void print_outcome(const fs::path& dir, const WrittenReport& report) {
   std::ifstream table(dir / "table.md");
   std::cout << "\n" << table.rdbuf() << "\n";
@@ -94,6 +105,15 @@ Experiment load_experiment(const RunOptions& o) {
   return experiment;
 }
 
+// One line before the trials start; with --resume, what is kept and what runs.
+void announce(const Experiment& e, const Problem& problem, TrialRange range, int threads,
+              std::optional<long> kept, long to_run) {
+  std::cerr << "Running " << e.name << ": " << e.algorithms.size() << " algorithm(s) x "
+            << range.size() << " trials on " << problem.name() << ", " << threads << " thread(s)";
+  if (kept) std::cerr << "; resuming: " << *kept << " finished, " << to_run << " to run";
+  std::cerr << "\n";
+}
+
 // Problem errors name the experiment file too: the key they name is in it.
 std::unique_ptr<Problem> build_problem(const Experiment& experiment, const std::string& file) {
   try {
@@ -103,50 +123,59 @@ std::unique_ptr<Problem> build_problem(const Experiment& experiment, const std::
   }
 }
 
-void run(const RunOptions& o) {
-  InterruptGuard interrupt;
+// Everything a run reads, checked before anything is written.
+struct RunInputs {
+  Experiment experiment;
+  TrialRange range;
+  std::unique_ptr<Problem> problem;
+  fs::path dir;
+};
+
+RunInputs read_inputs(const RunOptions& o) {
   if (o.force && o.resume)
     throw InputError("--resume and --force: give one; --resume keeps the finished trials, --force "
                      "discards them");
-  const Experiment experiment = load_experiment(o);
-  const TrialRange range = o.trial_range.empty()
-                               ? TrialRange{0, experiment.trials}
-                               : parse_trial_range(o.trial_range, experiment.trials, "--trial-range");
-  check_reference(experiment, o.reference);
-  const auto problem = build_problem(experiment, o.experiment);
-  const fs::path dir = o.out.empty() ? "out/" + experiment.name : o.out;
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  check_output_folder(dir, o);
-  const auto identity = campaign_identity(experiment, *problem, range);
-  ResumedTrials resumed;
-  if (o.resume) resumed = resume_trials(dir, identity, experiment, range);
+  RunInputs in;
+  in.experiment = load_experiment(o);
+  in.range = o.trial_range.empty()
+                 ? TrialRange{0, in.experiment.trials}
+                 : parse_trial_range(o.trial_range, in.experiment.trials, "--trial-range");
+  check_reference(in.experiment, o.reference);
+  in.problem = build_problem(in.experiment, o.experiment);
+  in.dir = o.out.empty() ? "out/" + in.experiment.name : o.out;
+  check_output_folder(in.dir, o);
+  return in;
+}
 
-  start_output_folder(dir, o.force, identity);
-  TrialLog log(dir / "trials.jsonl");
-  const long total = range.size() * long(experiment.algorithms.size());
-  const long to_run = total - long(resumed.finished.size());
-  std::atomic<long> finished{long(resumed.finished.size())};
-  interrupt.set_message([&] {
-    return "interrupted: " + std::to_string(finished.load()) + " of " + std::to_string(total) +
-           " trials finished and are kept in " + (dir / "trials.jsonl").string() +
-           "; the running ones were abandoned. Resume with:\n  " + resume_command(o, dir);
-  });
+void run(const RunOptions& o) {
+  InterruptGuard interrupt;
+  const RunInputs in = read_inputs(o);
+  const Experiment& experiment = in.experiment;
+  const auto identity = campaign_identity(experiment, *in.problem, in.range);
+  ResumedTrials resumed = o.resume ? resume_trials(in.dir, identity, experiment, in.range) : ResumedTrials{};
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+
+  start_output_folder(in.dir, o.force, identity);
+  TrialLog log(in.dir / "trials.jsonl");
+  const long total = in.range.size() * long(experiment.algorithms.size());
+  const long kept = long(resumed.finished.size());
+  std::atomic<long> finished{kept};
+  interrupt.set_message([&] { return interrupted_message(o, in.dir, finished.load(), total); });
   if (!resumed.warning.empty()) std::cerr << "hystbench: warning: " << resumed.warning << "\n";
-  Progress progress(to_run, stderr_is_terminal());
-  std::cerr << "Running " << experiment.name << ": " << experiment.algorithms.size() << " algorithm(s) x "
-            << range.size() << " trials on " << problem->name() << ", " << threads << " thread(s)";
-  if (o.resume) std::cerr << "; resuming: " << resumed.finished.size() << " finished, " << to_run << " to run";
-  std::cerr << "\n";
-  const auto results = run_campaign(*problem, experiment,
+  announce(experiment, *in.problem, in.range, threads, o.resume ? std::optional<long>(kept) : std::nullopt,
+           total - kept);
+  Progress progress(total - kept, stderr_is_terminal());
+  const auto results = run_campaign(*in.problem, experiment,
                                     {threads, [&](const TrialResult& r) {
+                                       // Under the interrupt lock: Ctrl-C never tears a line.
                                        std::lock_guard<std::mutex> lock(interrupt.mutex());
                                        log.append(r);
                                        ++finished;
                                        progress.trial_done(r);
                                      },
-                                     range, std::move(resumed.finished)});
+                                     in.range, std::move(resumed.finished)});
   progress.finish();
-  print_outcome(dir, write_report(dir, experiment, *problem, results, threads, o.reference));
+  print_outcome(in.dir, write_report(in.dir, experiment, *in.problem, results, threads, o.reference));
 }
 
 }  // namespace

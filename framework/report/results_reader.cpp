@@ -29,6 +29,9 @@ nlohmann::json read_summary(const std::filesystem::path& file) {
 ResultsFolder read_results_folder(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir))
     throw InputError(dir.string() + ": not a folder; give results folders of `hystbench run`");
+  if (!std::filesystem::exists(dir / "summary.json") && std::filesystem::exists(dir / "campaign.json"))
+    throw InputError(dir.string() + ": has no summary.json: its run was stopped before the end; "
+                     "finish it with `hystbench run EXPERIMENT --out " + dir.string() + " --resume`");
   return {dir, read_summary(dir / "summary.json"), read_trial_log(dir / "trials.jsonl").trials};
 }
 
