@@ -18,10 +18,16 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
   const long tasks = algorithms * per_algorithm;
   std::vector<std::vector<TrialResult>> results(algorithms,
                                                 std::vector<TrialResult>(per_algorithm));
+  std::vector<char> done(tasks, 0);
+  for (const TrialResult& r : options.finished) {
+    done[r.algorithm_index * per_algorithm + (r.trial - range.first)] = 1;
+    results[r.algorithm_index][r.trial - range.first] = r;
+  }
   std::exception_ptr callback_error;
 
   #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
   for (long task = 0; task < tasks; ++task) {
+    if (done[task]) continue;
     const int a = static_cast<int>(task / per_algorithm);
     const long trial = range.first + task % per_algorithm;
     TrialResult r = run_trial(problem, experiment, a, trial);

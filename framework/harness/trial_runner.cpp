@@ -45,6 +45,13 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
     ctx.fail();
     r.message = e.what();
   }
+  // Nothing finite to report is a failure, not a result: it must not sit in
+  // the statistics as an ordinary (if bad) fitness.
+  if (ctx.stop_reason() != StopReason::Failed && !std::isfinite(ctx.best_value())) {
+    ctx.fail();
+    r.message = "no candidate had a finite fitness: every evaluation diverged or gave NaN "
+                "(check the problem's bounds and data)";
+  }
   r.best = ctx.best_value();
   r.evaluations = ctx.evaluations();
   r.iterations = ctx.iterations();
