@@ -4,8 +4,10 @@
 # machine may have no package lists); otherwise it prints the command to run.
 set -euo pipefail
 
+# libpagmo-dev is optional for the build: only the peer comparison with
+# pagmo2 (benchmarks/peer) needs it, and it is skipped where pagmo is missing.
 packages=(cmake g++ make libeigen3-dev libnlopt-cxx-dev nlohmann-json3-dev
-          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox libpagmo-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,31 @@
+#pragma once
+// Part 2: the MEDE Table 1 protocol (benchmarks/experiments/mede_table1.json)
+// through hystbench, against the closest pagmo protocol: for each of our
+// algorithms the pagmo algorithm nearest to it, with the same population,
+// generations and number of trials.
+#include <vector>
+
+#include "benchmarks/peer/peer_row.hpp"
+#include "framework/harness/experiment.hpp"
+
+namespace hystbench::peer {
+
+struct ProtocolTimes {
+  double hystbench_serial = 0.0;  // wall seconds, one trial at a time
+  double hystbench_parallel = 0.0;  // wall seconds, `threads` trials at a time
+  double pagmo_serial = 0.0;
+  double pagmo_archipelago = 0.0;   // one pagmo thread island per trial
+  int threads = 1;
+  long evaluations = 0;             // whole protocol, hystbench
+  long pagmo_evaluations = 0;
+};
+
+struct ProtocolComparison {
+  std::vector<PeerRow> rows;  // per framework and algorithm, serial runs
+  ProtocolTimes times;
+};
+
+// Runs on the experiment's own problem, which must carry a noise floor.
+ProtocolComparison table1_protocol(const Experiment& experiment, int threads);
+
+}  // namespace hystbench::peer
