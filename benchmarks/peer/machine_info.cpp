@@ -1,5 +1,6 @@
 #include "benchmarks/peer/machine_info.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -20,6 +21,19 @@ std::string cpu_model() {
   return "unknown";
 }
 
+// The checkout the program runs in, when it is a git work tree: the commit
+// baked in at configure time goes stale as soon as anything is committed.
+std::string working_tree_revision(const std::string& fallback) {
+  FILE* pipe = popen("git describe --always --dirty --abbrev=12 2>/dev/null", "r");
+  if (!pipe) return fallback;
+  char buf[128] = {};
+  const bool got = std::fgets(buf, sizeof buf, pipe) != nullptr;
+  const bool ok = pclose(pipe) == 0 && got;
+  std::string s = buf;
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+  return ok && !s.empty() ? s : fallback;
+}
+
 }  // namespace
 
 MachineInfo machine_info() {
@@ -28,7 +42,7 @@ MachineInfo machine_info() {
           std::thread::hardware_concurrency(),
           p.value("compiler", ""),
           pagmo_version(),
-          p.value("git_commit", ""),
+          working_tree_revision(p.value("git_commit", "")),
           p.value("date", "")};
 }
 

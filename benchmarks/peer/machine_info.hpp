@@ -9,7 +9,7 @@ struct MachineInfo {
   unsigned cores = 0;    // hardware threads
   std::string compiler;
   std::string pagmo_version;
-  std::string hystbench_commit;
+  std::string hystbench_commit;  // `git describe` of the checkout it runs in
   std::string date;      // UTC
 };
 

@@ -43,6 +43,7 @@ TEST(PagmoPeer, WrapperFitnessIsExactlyOurs) {
   const std::vector<double> all(X.data(), X.data() + X.size());
   const std::vector<double> batch = pagmo_batch_fitness(box, all);
   ASSERT_EQ(batch.size(), static_cast<std::size_t>(X.cols()));
+  ASSERT_TRUE(ours.array().isFinite().any()) << "the candidates should include stable models";
   for (Eigen::Index i = 0; i < X.cols(); ++i) {
     const std::vector<double> x(X.col(i).data(), X.col(i).data() + X.rows());
     EXPECT_EQ(pagmo_fitness(box, x), ours[i]) << "candidate " << i;
