@@ -11,6 +11,8 @@
 namespace hystbench::peer {
 namespace {
 
+// Same populations as the equal-budget part; CMA-ES without restarts on both
+// sides, since IPOP's growing population changes the cost per evaluation.
 struct Pairing {
   std::string ours;
   nlohmann::json params;
@@ -44,7 +46,7 @@ std::vector<PeerRow> overhead_rows(int dimension, long evaluations, long trials,
   const auto lambda = static_cast<unsigned>(4 + std::floor(3.0 * std::log(dimension)));
   const std::vector<Pairing> pairs = {{"de", {{"np", 50}}, "de", 50},
                                       {"pso", {{"swarm", 40}}, "pso", 40},
-                                      {"cmaes", nlohmann::json::object(), "cmaes", lambda}};
+                                      {"cmaes", {{"restarts", "none"}}, "cmaes", lambda}};
   const Experiment e = sphere_experiment(pairs, dimension, evaluations, trials, seed);
   const auto problem = make_problem(e.problem, e.base_dir);
   const CampaignRun ours = run_hystbench(*problem, e, 1);

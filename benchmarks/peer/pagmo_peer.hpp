@@ -27,11 +27,14 @@ struct PagmoRun {
 // Throws std::invalid_argument for an unknown algorithm name.
 HYSTBENCH_PEER_API PeerTrial run_pagmo(const BoxFitness& problem, const PagmoRun& run);
 
-// The same runs evolved at once on a pagmo archipelago (one thread island
-// per run, no migration): pagmo's own way to use several cores. Returns the
-// wall time of the whole set, population initialisation included.
+// The same runs on pagmo archipelagos of `islands` thread islands (one run
+// per island, no migration), one archipelago after another: pagmo's own way
+// to use several cores, with no more threads than the machine has (one
+// island per run would start one thread per run). Returns the wall time of
+// the whole set, population initialisation included.
 HYSTBENCH_PEER_API double run_pagmo_archipelago(const BoxFitness& problem,
-                                                const std::vector<PagmoRun>& runs);
+                                                const std::vector<PagmoRun>& runs,
+                                                unsigned islands);
 
 // Fitness of x through the pagmo problem wrapper (one candidate per call),
 // and of candidates one after another through its batch_fitness.

@@ -1,4 +1,5 @@
 // The pagmo runs, timed from problem construction to the evolved population.
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <pagmo/archipelago.hpp>
@@ -37,15 +38,18 @@ PeerTrial run_pagmo(const BoxFitness& problem, const PagmoRun& run) {
   return evolve_timed(wrap(problem), run);
 }
 
-double run_pagmo_archipelago(const BoxFitness& problem, const std::vector<PagmoRun>& runs) {
+double run_pagmo_archipelago(const BoxFitness& problem, const std::vector<PagmoRun>& runs,
+                             unsigned islands) {
   const pagmo::problem wrapped = wrap(problem);
   const auto start = Clock::now();
-  pagmo::archipelago archi;
-  for (const PagmoRun& run : runs)
-    archi.push_back(pagmo::thread_island{}, make_pagmo_algorithm(run), wrapped, run.population,
-                    run.seed);
-  archi.evolve(1);
-  archi.wait_check();
+  for (std::size_t first = 0; first < runs.size(); first += islands) {
+    pagmo::archipelago archi;
+    for (std::size_t i = first; i < std::min(runs.size(), first + islands); ++i)
+      archi.push_back(pagmo::thread_island{}, make_pagmo_algorithm(runs[i]), wrapped,
+                      runs[i].population, runs[i].seed);
+    archi.evolve(1);
+    archi.wait_check();
+  }
   return seconds_since(start);
 }
 

@@ -59,7 +59,8 @@ void protocol_summary(std::ostream& out, const ProtocolTimes& t) {
   line("hystbench, 1 thread", t.hystbench_serial, t.evaluations);
   line("hystbench, " + std::to_string(t.threads) + " threads", t.hystbench_parallel, t.evaluations);
   line("pagmo, 1 thread", t.pagmo_serial, t.pagmo_evaluations);
-  line("pagmo archipelago, one thread island per trial", t.pagmo_archipelago, t.pagmo_evaluations);
+  line("pagmo, archipelagos of " + std::to_string(t.threads) + " thread islands", t.pagmo_archipelago,
+       t.pagmo_evaluations);
   out << "\nhystbench on " << t.threads << " threads against pagmo's archipelago: "
       << fixed(t.pagmo_archipelago / t.hystbench_parallel, 2) << "x; one thread against one thread: "
       << fixed(t.pagmo_serial / t.hystbench_serial, 2) << "x.\n\n";

@@ -86,7 +86,7 @@ ProtocolComparison table1_protocol(const Experiment& e, int threads) {
   }
   std::vector<PagmoRun> all;
   for (const auto& list : runs) all.insert(all.end(), list.begin(), list.end());
-  times.pagmo_archipelago = run_pagmo_archipelago(box, all);
+  times.pagmo_archipelago = run_pagmo_archipelago(box, all, static_cast<unsigned>(threads));
   return out;
 }
 

@@ -14,7 +14,7 @@ struct ProtocolTimes {
   double hystbench_serial = 0.0;  // wall seconds, one trial at a time
   double hystbench_parallel = 0.0;  // wall seconds, `threads` trials at a time
   double pagmo_serial = 0.0;
-  double pagmo_archipelago = 0.0;   // one pagmo thread island per trial
+  double pagmo_archipelago = 0.0;   // archipelagos of `threads` thread islands
   int threads = 1;
   long evaluations = 0;             // whole protocol, hystbench
   long pagmo_evaluations = 0;

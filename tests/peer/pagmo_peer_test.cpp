@@ -58,7 +58,7 @@ TEST(PagmoPeer, PagmoRunsSpendTheirGenerations) {
     EXPECT_EQ(t.evaluations, 12 * (1 + 9)) << algorithm;
     EXPECT_LT(t.best, std::numeric_limits<double>::infinity()) << algorithm;
   }
-  EXPECT_GT(run_pagmo_archipelago(box, {{"de", 12, 3, 1}, {"cmaes", 12, 3, 2}}), 0.0);
+  EXPECT_GT(run_pagmo_archipelago(box, {{"de", 12, 3, 1}, {"cmaes", 12, 3, 2}, {"sga", 12, 3, 3}}, 2), 0.0);
 }
 
 TEST(PagmoPeer, HystbenchRunsSpendTheBudget) {
