@@ -45,30 +45,31 @@ Experiment our_experiment(const PeerSetup& setup, const std::vector<Pairing>& pa
                                "equal-budget experiment");
 }
 
-std::vector<PeerTrial> pagmo_trials(const PeerSetup& setup, const BoxFitness& box, const Pairing& p) {
+PagmoRun pagmo_run(const PeerSetup& setup, const Pairing& p, long trial) {
   // Initial population plus whole generations, never above the budget.
   const auto generations = static_cast<unsigned>((setup.budget - p.population) / p.population);
-  std::vector<PeerTrial> out;
-  for (long t = 0; t < setup.trials; ++t)
-    out.push_back(run_pagmo(box, {p.theirs, p.population, generations,
-                                  static_cast<unsigned>(setup.seed + t)}));
-  return out;
+  return {p.theirs, p.population, generations, static_cast<unsigned>(setup.seed + trial)};
 }
 
 }  // namespace
 
 std::vector<PeerRow> equal_budget_rows(const PeerSetup& setup) {
   const auto pairs = lineup(setup.problem->dimension());
-  const CampaignRun ours = run_hystbench(*setup.problem, our_experiment(setup, pairs), 1);
+  const Experiment experiment = our_experiment(setup, pairs);
   const BoxFitness box = box_fitness(*setup.problem);
   const std::string budget = std::to_string(setup.budget) + " evaluations";
   std::vector<PeerRow> rows;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pairing& p = pairs[i];
-    rows.push_back(summarise({"equal budget", "hystbench", p.ours, p.our_settings, budget},
-                             ours.trials[i], setup.noise_floor));
-    rows.push_back(summarise({"equal budget", "pagmo", p.theirs, p.their_settings, budget},
-                             pagmo_trials(setup, box, p), setup.noise_floor));
+    std::vector<PeerTrial> ours, theirs;
+    for (long t = 0; t < setup.trials; ++t) {
+      ours.push_back(run_hystbench_trial(*setup.problem, experiment, static_cast<int>(i), t));
+      theirs.push_back(run_pagmo(box, pagmo_run(setup, p, t)));
+    }
+    rows.push_back(summarise({"equal budget", "hystbench", p.ours, p.our_settings, budget}, ours,
+                             setup.noise_floor));
+    rows.push_back(summarise({"equal budget", "pagmo", p.theirs, p.their_settings, budget}, theirs,
+                             setup.noise_floor));
   }
   return rows;
 }

@@ -17,4 +17,10 @@ struct CampaignRun {
 // exactly as `hystbench run` does it.
 CampaignRun run_hystbench(const Problem& problem, const Experiment& experiment, int threads);
 
+// One trial, with the seed it has in the whole campaign: lets a caller
+// alternate our trials with pagmo's, so that a change in the machine's load
+// falls on both alike.
+PeerTrial run_hystbench_trial(const Problem& problem, const Experiment& experiment, int algorithm,
+                              long trial);
+
 }  // namespace hystbench::peer

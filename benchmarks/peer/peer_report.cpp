@@ -53,7 +53,8 @@ void protocol_summary(std::ostream& out, const ProtocolTimes& t) {
     out << markdown::row({what, fixed(s, 2), std::to_string(evaluations),
                           fixed(double(evaluations) / s, 0), fixed(t.pagmo_serial / s, 2)});
   };
-  out << "Whole protocol, wall clock:\n\n"
+  out << "Whole protocol (one thread: sums of the trial times above; " << t.threads
+      << " threads: wall clock):\n\n"
       << markdown::header_row({"run", "wall s", "evaluations", "evaluations / s",
                                "speed-up over pagmo, one thread"});
   line("hystbench, 1 thread", t.hystbench_serial, t.evaluations);

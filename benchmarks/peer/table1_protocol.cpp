@@ -1,7 +1,5 @@
 #include "benchmarks/peer/table1_protocol.hpp"
 
-#include <chrono>
-#include <functional>
 #include <map>
 #include <string>
 
@@ -44,10 +42,11 @@ std::vector<std::vector<PagmoRun>> pagmo_runs(const Experiment& e, int dimension
   return runs;
 }
 
-double seconds(const std::function<void()>& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+void add_up(const std::vector<PeerTrial>& trials, double& seconds, long& evaluations) {
+  for (const PeerTrial& t : trials) {
+    seconds += t.wall_seconds;
+    evaluations += t.evaluations;
+  }
 }
 
 std::string settings(const PagmoRun& run) { return "NP " + std::to_string(run.population); }
@@ -66,24 +65,23 @@ ProtocolComparison table1_protocol(const Experiment& e, int threads) {
   ProtocolComparison out;
   ProtocolTimes& times = out.times;
   times.threads = threads;
-  const CampaignRun serial = run_hystbench(*problem, e, 1);
-  times.hystbench_serial = serial.wall_seconds;
-  times.hystbench_parallel = run_hystbench(*problem, e, threads).wall_seconds;
   for (std::size_t a = 0; a < e.algorithms.size(); ++a) {
     const AlgorithmSpec& spec = e.algorithms[a];
-    PeerRow ours{"MEDE Table 1 protocol", "hystbench", spec.name,
-                 "NP " + std::to_string(population(spec, problem->dimension())), budget};
-    out.rows.push_back(summarise(ours, serial.trials[a], nf));
-    std::vector<PeerTrial> theirs;
-    times.pagmo_serial += seconds([&] {
-      for (const PagmoRun& run : runs[a]) theirs.push_back(run_pagmo(box, run));
-    });
+    std::vector<PeerTrial> ours, theirs;
+    for (long t = 0; t < e.trials; ++t) {
+      ours.push_back(run_hystbench_trial(*problem, e, static_cast<int>(a), t));
+      theirs.push_back(run_pagmo(box, runs[a][t]));
+    }
+    add_up(ours, times.hystbench_serial, times.evaluations);
+    add_up(theirs, times.pagmo_serial, times.pagmo_evaluations);
+    out.rows.push_back(summarise({"MEDE Table 1 protocol", "hystbench", spec.name,
+                                  "NP " + std::to_string(population(spec, problem->dimension())), budget},
+                                 ours, nf));
     out.rows.push_back(summarise({"MEDE Table 1 protocol", "pagmo", runs[a][0].algorithm,
                                   settings(runs[a][0]), budget},
                                  theirs, nf));
-    for (const PeerTrial& t : serial.trials[a]) times.evaluations += t.evaluations;
-    for (const PeerTrial& t : theirs) times.pagmo_evaluations += t.evaluations;
   }
+  times.hystbench_parallel = run_hystbench(*problem, e, threads).wall_seconds;
   std::vector<PagmoRun> all;
   for (const auto& list : runs) all.insert(all.end(), list.begin(), list.end());
   times.pagmo_archipelago = run_pagmo_archipelago(box, all, static_cast<unsigned>(threads));

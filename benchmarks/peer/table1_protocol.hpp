@@ -11,10 +11,13 @@
 namespace hystbench::peer {
 
 struct ProtocolTimes {
-  double hystbench_serial = 0.0;  // wall seconds, one trial at a time
-  double hystbench_parallel = 0.0;  // wall seconds, `threads` trials at a time
+  // One trial at a time, ours and pagmo's alternating: sums of trial times.
+  double hystbench_serial = 0.0;
   double pagmo_serial = 0.0;
-  double pagmo_archipelago = 0.0;   // archipelagos of `threads` thread islands
+  // The whole protocol on `threads` cores, wall clock: our trials in
+  // parallel, pagmo's on archipelagos of `threads` thread islands.
+  double hystbench_parallel = 0.0;
+  double pagmo_archipelago = 0.0;
   int threads = 1;
   long evaluations = 0;             // whole protocol, hystbench
   long pagmo_evaluations = 0;
