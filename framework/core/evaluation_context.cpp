@@ -89,7 +89,7 @@ Eigen::Index EvaluationContext::evaluate(const Eigen::MatrixXd& X, Eigen::Vector
     if (!bounds().contains(X.col(i)))
       throw std::logic_error("optimizer evaluated a point outside the bounds");
   }
-  problem_.evaluate(X.leftCols(n), f.head(n));
+  problem_.evaluate_with(X.leftCols(n), f.head(n), options_);
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!std::isfinite(f[i])) f[i] = kInf;
     record(X.col(i), f[i]);

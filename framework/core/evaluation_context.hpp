@@ -30,6 +30,11 @@ class EvaluationContext {
   const Bounds& bounds() const { return problem_.bounds(); }
   Rng& rng() { return rng_; }
 
+  // Threads each batch evaluation may use (EvaluationOptions::threads); 1
+  // unless the caller runs nothing else in parallel. Values do not depend on it.
+  void set_evaluation_threads(int threads) { options_.threads = threads; }
+  int evaluation_threads() const { return options_.threads; }
+
   // Evaluates the columns of X into f (resized to X.cols()). Returns how many
   // columns were evaluated, in order: fewer than X.cols() when the budget ran
   // out, and the rest of f is +inf. Throws std::logic_error for a point
@@ -74,6 +79,7 @@ class EvaluationContext {
 
   const Problem& problem_;
   Budget budget_;
+  EvaluationOptions options_;
   Rng rng_;
   std::chrono::steady_clock::time_point start_;
   std::optional<long> phase_limit_;

@@ -20,6 +20,16 @@ struct Bounds {
   Eigen::VectorXd clamp(const Eigen::Ref<const Eigen::VectorXd>& x) const;
 };
 
+// How one batch evaluation may run, decided by the caller that owns the
+// threads. The harness runs either several trials in parallel or the
+// candidates of one batch in parallel, never both: one active level of
+// parallelism, so the cores are not oversubscribed.
+struct EvaluationOptions {
+  // OpenMP threads the call may spread its candidates over; 1 keeps it on
+  // the calling thread.
+  int threads = 1;
+};
+
 class Problem {
  public:
   virtual ~Problem() = default;
@@ -32,6 +42,13 @@ class Problem {
   // Inf; the evaluation context maps those to +inf.
   virtual void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                         Eigen::Ref<Eigen::VectorXd> f) const = 0;
+  // The framework's entry point: evaluate() with the caller's options.
+  // Problems that can share a batch between threads override it; the
+  // values must not depend on options.threads. The default ignores them.
+  virtual void evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Ref<Eigen::VectorXd> f,
+                             const EvaluationOptions& /*options*/) const {
+    evaluate(X, f);
+  }
   // Facts for summary.json: data file, known optimum, noise floor, ...
   virtual nlohmann::json describe() const { return {{"name", name()}}; }
 
