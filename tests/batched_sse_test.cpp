@@ -59,7 +59,7 @@ Eigen::VectorXd scalar(const Eigen::MatrixXd& X, BoucWenForm form) {
 
 Eigen::VectorXd batched(const Eigen::MatrixXd& X, BoucWenForm form, int threads = 1) {
   Eigen::VectorXd f(X.cols());
-  hammerstein_sse_batched(X, data().u, data().y, data().sample_time, form, f, threads);
+  hammerstein_sse_batched(X, data().u, data().y, data().sample_time, form, f, {threads});
   return f;
 }
 

@@ -2,6 +2,7 @@
 // A problem is "bounds + batch fitness": everything an optimizer may know.
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct EvaluationOptions {
   // OpenMP threads the call may spread its candidates over; 1 keeps it on
   // the calling thread.
   int threads = 1;
+  // Early abandonment, for callers that only compare candidate i with
+  // abandon_above[i] (greedy selection against its parent): a problem may
+  // stop a candidate whose partial fitness already exceeds that value and
+  // report any value above it. Empty: every candidate is evaluated in full.
+  // Problems are free to ignore it.
+  std::span<const double> abandon_above;
 };
 
 class Problem {

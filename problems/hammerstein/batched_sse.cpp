@@ -2,7 +2,9 @@
 
 #include <bit>
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <span>
 #include <limits>
 #include <vector>
 
@@ -77,34 +79,58 @@ template <BoucWenForm form>
   return {drive, std::abs(drive), u[k], y[k]};
 }
 
-// The states are locals (never stored to memory in the loop) so that they
-// stay in registers; the coefficients are read from memory, which costs
-// loads but no latency.
-template <BoucWenForm form>
-Lanes block_sse(const BlockCoefficients& q0, const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
-  BlockState s0;
-  double u_prev = 0.0;
-  for (Eigen::Index k = 0; k < u.size(); ++k) {
-    const Sample x = sample<form>(u, y, k, u_prev);
-    advance(s0, q0, x);
-    u_prev = x.u;
-  }
-  return s0.sse;
+// Samples between checks for blocks whose every lane is settled: the check
+// costs a compare, the run it may save is the rest of the record.
+constexpr Eigen::Index kCheckEvery = 256;
+
+// True when no lane's remaining samples can change what the caller learns:
+// its partial SSE already exceeds its abandon_above limit, or is no longer
+// finite (so the final value is +inf whatever follows).
+inline bool settled(const Lanes& sse, const Lanes& limit) {
+  const LaneBits open = (sse <= limit) & (sse < kInf);
+  for (int l = 0; l < kLanes; ++l)
+    if (open[l]) return false;
+  return true;
 }
 
+// Advances one block from sample k until the end of the record or until it
+// is settled. The state is copied into locals, never stored to memory in
+// the loop, so that it stays in registers; the coefficients are read from
+// memory, which costs loads but no latency.
 template <BoucWenForm form>
-void block_pair_sse(const BlockCoefficients& q0, const BlockCoefficients& q1, const Eigen::VectorXd& u,
-                    const Eigen::VectorXd& y, Lanes& sse0, Lanes& sse1) {
-  BlockState s0, s1;
-  double u_prev = 0.0;
-  for (Eigen::Index k = 0; k < u.size(); ++k) {
-    const Sample x = sample<form>(u, y, k, u_prev);
-    advance(s0, q0, x);
-    advance(s1, q1, x);
-    u_prev = x.u;
+void run_block(BlockState& state, const BlockCoefficients& q, const Lanes& limit, const Eigen::VectorXd& u,
+               const Eigen::VectorXd& y, Eigen::Index k) {
+  BlockState s = state;
+  double u_prev = k > 0 ? u[k - 1] : 0.0;
+  while (k < u.size() && !settled(s.sse, limit)) {
+    for (const Eigen::Index end = std::min(k + kCheckEvery, u.size()); k < end; ++k) {
+      const Sample x = sample<form>(u, y, k, u_prev);
+      advance(s, q, x);
+      u_prev = x.u;
+    }
   }
-  sse0 = s0.sse;
-  sse1 = s1.sse;
+  state = s;
+}
+
+// Two blocks together, until one of them is settled; returns the next sample.
+template <BoucWenForm form>
+Eigen::Index run_pair(BlockState& state0, const BlockCoefficients& q0, const Lanes& limit0, BlockState& state1,
+                      const BlockCoefficients& q1, const Lanes& limit1, const Eigen::VectorXd& u,
+                      const Eigen::VectorXd& y) {
+  BlockState s0 = state0, s1 = state1;
+  double u_prev = 0.0;
+  Eigen::Index k = 0;
+  while (k < u.size() && !settled(s0.sse, limit0) && !settled(s1.sse, limit1)) {
+    for (const Eigen::Index end = std::min(k + kCheckEvery, u.size()); k < end; ++k) {
+      const Sample x = sample<form>(u, y, k, u_prev);
+      advance(s0, q0, x);
+      advance(s1, q1, x);
+      u_prev = x.u;
+    }
+  }
+  state0 = s0;
+  state1 = s1;
+  return k;
 }
 
 // The candidates that need simulating: unstable linear blocks have fitness
@@ -112,9 +138,11 @@ void block_pair_sse(const BlockCoefficients& q0, const BlockCoefficients& q1, co
 struct Packing {
   std::vector<Eigen::Index> columns;  // live candidates, in column order
   std::vector<BlockCoefficients> blocks;
+  std::vector<Lanes> limits;  // abandon_above of each lane, +inf when not given
 };
 
-Packing pack(const Eigen::Ref<const Eigen::MatrixXd>& X, double Ts, Eigen::Ref<Eigen::VectorXd> f) {
+Packing pack(const Eigen::Ref<const Eigen::MatrixXd>& X, double Ts, std::span<const double> abandon_above,
+             Eigen::Ref<Eigen::VectorXd> f) {
   Packing pk;
   std::vector<RecurrenceCoefficients> live;
   for (Eigen::Index i = 0; i < X.cols(); ++i) {
@@ -128,10 +156,15 @@ Packing pack(const Eigen::Ref<const Eigen::MatrixXd>& X, double Ts, Eigen::Ref<E
   }
   const std::size_t n = live.size();
   pk.blocks.resize((n + kLanes - 1) / kLanes);
+  pk.limits.resize(pk.blocks.size());
   // A partial last block is padded with copies of its last candidate: valid
   // numbers (no spurious overflow) whose results are discarded.
   for (std::size_t b = 0; b < pk.blocks.size(); ++b)
-    for (int l = 0; l < kLanes; ++l) pk.blocks[b].set_lane(l, live[std::min(b * kLanes + l, n - 1)]);
+    for (int l = 0; l < kLanes; ++l) {
+      const std::size_t j = std::min(b * kLanes + l, n - 1);
+      pk.blocks[b].set_lane(l, live[j]);
+      pk.limits[b][l] = abandon_above.empty() ? kInf : abandon_above[pk.columns[j]];
+    }
   return pk;
 }
 
@@ -153,14 +186,16 @@ void simulate_blocks(const Packing& pk, const Eigen::VectorXd& u, const Eigen::V
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1 && pairs > 1)
   for (long g = 0; g < pairs; ++g) {
     const std::size_t b = 2 * g;
-    if (b + 1 < pk.blocks.size()) {
-      Lanes sse0, sse1;
-      block_pair_sse<form>(pk.blocks[b], pk.blocks[b + 1], u, y, sse0, sse1);
-      store(pk, b, sse0, f);
-      store(pk, b + 1, sse1, f);
-    } else {
-      store(pk, b, block_sse<form>(pk.blocks[b], u, y), f);
-    }
+    BlockState s0, s1;
+    Eigen::Index k = 0;
+    const bool paired = b + 1 < pk.blocks.size();
+    if (paired) k = run_pair<form>(s0, pk.blocks[b], pk.limits[b], s1, pk.blocks[b + 1], pk.limits[b + 1], u, y);
+    // Alone, or the one of the pair still running once the other settled.
+    run_block<form>(s0, pk.blocks[b], pk.limits[b], u, y, k);
+    store(pk, b, s0.sse, f);
+    if (!paired) continue;
+    run_block<form>(s1, pk.blocks[b + 1], pk.limits[b + 1], u, y, k);
+    store(pk, b + 1, s1.sse, f);
   }
 }
 
@@ -170,13 +205,13 @@ int batched_sse_lanes() { return kLanes; }
 
 void hammerstein_sse_batched(const Eigen::Ref<const Eigen::MatrixXd>& X, const Eigen::VectorXd& u,
                              const Eigen::VectorXd& y, double Ts, BoucWenForm form,
-                             Eigen::Ref<Eigen::VectorXd> f, int threads) {
-  const Packing pk = pack(X, Ts, f);
+                             Eigen::Ref<Eigen::VectorXd> f, const EvaluationOptions& options) {
+  const Packing pk = pack(X, Ts, options.abandon_above, f);
   if (pk.columns.empty()) return;
   if (form == BoucWenForm::Increment)
-    simulate_blocks<BoucWenForm::Increment>(pk, u, y, f, threads);
+    simulate_blocks<BoucWenForm::Increment>(pk, u, y, f, options.threads);
   else
-    simulate_blocks<BoucWenForm::Paper>(pk, u, y, f, threads);
+    simulate_blocks<BoucWenForm::Paper>(pk, u, y, f, options.threads);
 }
 
 }  // namespace hystbench

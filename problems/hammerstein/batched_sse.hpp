@@ -14,6 +14,7 @@
 // neighbours, on the block it landed in, or on the thread count.
 #include <Eigen/Core>
 
+#include "framework/core/problem.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"
 
 namespace hystbench {
@@ -22,11 +23,14 @@ namespace hystbench {
 int batched_sse_lanes();
 
 // f[i] = hammerstein_sse(column i of X, ...) for every column of X
-// (13 x n, HammersteinParams::to_vector order); f has size n. `threads`
-// OpenMP threads share the blocks; 1 runs on the calling thread only.
+// (13 x n, HammersteinParams::to_vector order); f has size n.
+// options.threads OpenMP threads share the blocks (1: the calling thread
+// only). With options.abandon_above, a block stops once every lane's partial
+// SSE exceeds its limit; such a candidate gets its partial SSE, a value
+// above its limit (the SSE only grows), and the others their exact SSE.
 // Thread-safe.
 void hammerstein_sse_batched(const Eigen::Ref<const Eigen::MatrixXd>& X, const Eigen::VectorXd& u,
                              const Eigen::VectorXd& y, double Ts, BoucWenForm form,
-                             Eigen::Ref<Eigen::VectorXd> f, int threads = 1);
+                             Eigen::Ref<Eigen::VectorXd> f, const EvaluationOptions& options = {});
 
 }  // namespace hystbench

@@ -100,7 +100,7 @@ void HammersteinProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
 void HammersteinProblem::evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X,
                                        Eigen::Ref<Eigen::VectorXd> f,
                                        const EvaluationOptions& options) const {
-  hammerstein_sse_batched(X, data_.u, data_.y, data_.sample_time, form_, f, options.threads);
+  hammerstein_sse_batched(X, data_.u, data_.y, data_.sample_time, form_, f, options);
 }
 
 Eigen::VectorXd HammersteinProblem::simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const {
