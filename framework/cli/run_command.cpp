@@ -205,7 +205,9 @@ Action add_run_command(CLI::App& app) {
                                         "then tables, convergence curves and figures");
   cmd->add_option("experiment", o->experiment, "experiment JSON file")->required();
   cmd->add_option("--out", o->out, "results folder (default: out/<experiment name>)");
-  cmd->add_option("--threads", o->threads, "trials run in parallel (default: all cores)")
+  cmd->add_option("--threads", o->threads,
+                  "threads: trials in parallel, or, with fewer trials than threads, the "
+                  "candidates of each evaluation (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--trials", o->trials, "override the experiment's number of trials")
       ->check(CLI::Range(1L, 1000000L));

@@ -4,6 +4,7 @@
 
 #include <exception>
 
+#include "framework/harness/thread_split.hpp"
 #include "framework/harness/trial_runner.hpp"
 
 namespace hystbench {
@@ -24,13 +25,14 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
     results[r.algorithm_index][r.trial - range.first] = r;
   }
   std::exception_ptr callback_error;
+  const ThreadSplit split = split_threads(tasks, options.threads);
 
-  #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
+  #pragma omp parallel for schedule(dynamic, 1) num_threads(split.trial_threads)
   for (long task = 0; task < tasks; ++task) {
     if (done[task]) continue;
     const int a = static_cast<int>(task / per_algorithm);
     const long trial = range.first + task % per_algorithm;
-    TrialResult r = run_trial(problem, experiment, a, trial);
+    TrialResult r = run_trial(problem, experiment, a, trial, split.evaluation_threads);
     #pragma omp critical(hystbench_trial_done)
     {
       // An exception must not leave an OpenMP region; keep the first.

@@ -8,7 +8,9 @@
 
 namespace hystbench {
 
+// `evaluation_threads`: threads each batch evaluation may use (see
+// thread_split.hpp); the result does not depend on it.
 TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
-                      long trial);
+                      long trial, int evaluation_threads = 1);
 
 }  // namespace hystbench
