@@ -25,7 +25,9 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
     results[r.algorithm_index][r.trial - range.first] = r;
   }
   std::exception_ptr callback_error;
-  const ThreadSplit split = split_threads(tasks, options.threads);
+  // A resumed run splits its threads by the trials it still has to run.
+  const long remaining = tasks - static_cast<long>(options.finished.size());
+  const ThreadSplit split = split_threads(remaining, options.threads);
 
   #pragma omp parallel for schedule(dynamic, 1) num_threads(split.trial_threads)
   for (long task = 0; task < tasks; ++task) {
