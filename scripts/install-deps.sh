@@ -5,7 +5,8 @@
 set -euo pipefail
 
 packages=(cmake g++ make libeigen3-dev libnlopt-cxx-dev nlohmann-json3-dev
-          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
+          libopenmpi-dev openmpi-bin)
 
 missing=()
 for p in "${packages[@]}"; do

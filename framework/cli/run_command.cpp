@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cluster/cluster.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
 #include "framework/harness/campaign.hpp"
@@ -81,13 +82,15 @@ void run(const RunOptions& o) {
   const auto problem = make_problem(experiment.problem, experiment.base_dir);
   const std::filesystem::path dir = o.out.empty() ? "out/" + experiment.name : o.out;
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  // Under mpirun the ranks other than 0 only run the trials rank 0 hands out.
+  if (cluster::is_worker()) return cluster::serve_trials(*problem, experiment, threads);
 
   prepare_output_folder(dir, o.force);
   TrialLog log(dir / "trials.jsonl");
   Progress progress(range.size() * long(experiment.algorithms.size()), stderr_is_terminal());
   std::cerr << "Running " << experiment.name << ": " << experiment.algorithms.size() << " algorithm(s) x "
             << range.size() << " trials on " << problem->name() << ", " << threads << " thread(s)\n";
-  const auto results = run_campaign(*problem, experiment,
+  const auto results = cluster::run_campaign(*problem, experiment,
                                     {threads, [&](const TrialResult& r) {
                                        log.append(r);
                                        progress.trial_done(r);
@@ -122,8 +125,10 @@ Action add_run_command(CLI::App& app) {
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
-    load_plugins();
-    run(*o);
+    cluster::run_on_all_ranks([&] {
+      load_plugins();
+      run(*o);
+    });
   };
 }
 
