@@ -13,6 +13,9 @@ trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # One thread per rank: three ranks on a two-core machine stay quick.
 export OMP_NUM_THREADS=1
+# Containers often forbid the cross-memory copy Open MPI uses for large
+# messages between ranks of one machine; plain copies work everywhere.
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
 mpirun_3() { timeout 120 mpirun --oversubscribe --bind-to none -np 3 "$@"; }
 
 cat > "$work/experiment.json" <<JSON

@@ -15,14 +15,19 @@ ResultCollector::ResultCollector(int algorithms, TrialRange trials,
 void ResultCollector::add(TrialResult r) {
   std::lock_guard<std::mutex> lock(mutex_);
   try {
-    place(std::move(r));
+    place(std::move(r), true);
   } catch (...) {
     if (!error_) error_ = std::current_exception();
   }
 }
 
+void ResultCollector::keep(TrialResult r) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  place(std::move(r), false);
+}
+
 // Checked because a result from another rank crossed a process boundary.
-void ResultCollector::place(TrialResult r) {
+void ResultCollector::place(TrialResult r, bool report) {
   const int a = r.algorithm_index;
   const long t = r.trial;
   if (a < 0 || a >= int(results_.size()) || t < trials_.first || t >= trials_.end ||
@@ -30,7 +35,7 @@ void ResultCollector::place(TrialResult r) {
     throw std::runtime_error("a rank sent trial " + std::to_string(t) + " of algorithm " +
                              std::to_string(a) + ", which was not handed out");
   present_[a][t - trials_.first] = true;
-  if (on_trial_done_ && !error_) on_trial_done_(r);
+  if (report && on_trial_done_ && !error_) on_trial_done_(r);
   results_[a][t - trials_.first] = std::move(r);
 }
 

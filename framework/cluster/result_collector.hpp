@@ -19,6 +19,9 @@ class ResultCollector {
   // Thread-safe. Never throws: a result that does not belong to the campaign,
   // or a callback that throws, is kept as the run's error (the first one).
   void add(TrialResult r);
+  // A trial finished by an earlier run (`run --resume`): into the results,
+  // not to the callback (its line is in trials.jsonl already).
+  void keep(TrialResult r);
   // Keeps `error` as the run's error unless one is kept already.
   void fail(std::exception_ptr error);
   bool failed();
@@ -26,7 +29,7 @@ class ResultCollector {
   std::vector<std::vector<TrialResult>> take_results();
 
  private:
-  void place(TrialResult r);
+  void place(TrialResult r, bool report);
 
   std::mutex mutex_;
   TrialRange trials_;
