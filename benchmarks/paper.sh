@@ -35,7 +35,9 @@ done
 
 # Friedman ranking over several data sets: each excitation at two noise
 # levels, simulated from the bundled data's true parameters, one run each.
-friedman="$out/friedman"
+# Paths inside the repository are written relative to it: the data files
+# record the command that made them.
+friedman="$(realpath -m --relative-to="$repo" "$out/friedman")"
 params=problems/hammerstein/data/default.params.json
 seed=11
 for excitation in multisine sweep steps; do

@@ -6,6 +6,7 @@
 #include "tests/temp_dir.hpp"
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,14 +44,38 @@ nlohmann::json numbers_of(const fs::path& summary) {
   return j;
 }
 
+// Every trial line without its wall time, sorted: finishing order varies
+// with threads, nothing else may.
+std::vector<nlohmann::json> sorted_trials(const fs::path& file) {
+  std::vector<nlohmann::json> out;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    auto j = nlohmann::json::parse(line);
+    j.erase("wall_seconds");
+    out.push_back(j);
+  }
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.dump() < y.dump(); });
+  return out;
+}
+
 TEST_F(Cli, SummaryNumbersDoNotDependOnThreadCount) {
   const auto exp = experiment(default_data(), R"("name": "de", "label": "DE", "params": {"np": 30})");
   const auto one = hystbench("run " + exp + " --threads 1 --out " + (dir_ / "one").string());
   ASSERT_EQ(one.code, 0) << one.output;
   const auto two = hystbench("run " + exp + " --threads 2 --out " + (dir_ / "two").string());
   ASSERT_EQ(two.code, 0) << two.output;
+  const auto again = hystbench("run " + exp + " --threads 2 --out " + (dir_ / "again").string());
+  ASSERT_EQ(again.code, 0) << again.output;
   const auto a = numbers_of(dir_ / "one" / "summary.json");
   EXPECT_EQ(a, numbers_of(dir_ / "two" / "summary.json"));
+  EXPECT_EQ(a, numbers_of(dir_ / "again" / "summary.json"));
+  const auto trials = sorted_trials(dir_ / "one" / "trials.jsonl");
+  EXPECT_EQ(trials.size(), 4u);
+  EXPECT_EQ(trials, sorted_trials(dir_ / "two" / "trials.jsonl"));
+  EXPECT_EQ(trials, sorted_trials(dir_ / "again" / "trials.jsonl"));
+  for (const char* table : {"table.csv", "stats.csv", "convergence.csv"})
+    EXPECT_EQ(hystbench::test_support::read(dir_ / "one" / table),
+              hystbench::test_support::read(dir_ / "two" / table)) << table;
   EXPECT_EQ(a["algorithms"][0]["trials"], 4);
   EXPECT_TRUE(a["algorithms"][0]["best_x"].contains("alpha"));
   for (const char* f : {"trials.jsonl", "table.md", "table.tex", "table.csv", "convergence.csv", "convergence.gp",
@@ -65,7 +90,7 @@ TEST_F(Cli, RefusesToOverwriteResultsWithoutForce) {
   ASSERT_EQ(hystbench("run " + exp + out).code, 0);
   const auto again = hystbench("run " + exp + out);
   EXPECT_EQ(again.code, 2);
-  EXPECT_NE(again.output.find("already holds results; pass --force"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("already holds results; pass --resume to run only the missing trials, --force"), std::string::npos) << again.output;
   EXPECT_EQ(hystbench("run " + exp + out + " --force").code, 0);
 }
 

@@ -60,6 +60,10 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
   const int algorithms = static_cast<int>(experiment.algorithms.size());
   TaskDispenser dispenser(algorithms, trials);
   ResultCollector collector(algorithms, trials, options.on_trial_done);
+  for (const TrialResult& r : options.finished) {  // kept by `run --resume`
+    dispenser.skip(r.algorithm_index, r.trial);
+    collector.keep(r);
+  }
   std::cerr << "Trials handed out to " << size() << " MPI ranks as they ask for work\n";
 
   std::exception_ptr serving_error;

@@ -79,6 +79,23 @@ void EvaluationContext::record(const Eigen::Ref<const Eigen::VectorXd>& x, doubl
 }
 
 Eigen::Index EvaluationContext::evaluate(const Eigen::MatrixXd& X, Eigen::VectorXd& f) {
+  return evaluate(X, f, {});
+}
+
+Eigen::Index EvaluationContext::evaluate_against(const Eigen::MatrixXd& X, const Eigen::VectorXd& threshold,
+                                                 Eigen::VectorXd& f) {
+  if (threshold.size() != X.cols())
+    throw std::logic_error("evaluate_against: " + std::to_string(threshold.size()) + " thresholds for " +
+                           std::to_string(X.cols()) + " candidates");
+  if (!early_abandonment_) return evaluate(X, f, {});
+  // A threshold below the best-so-far could let an abandoned (inexact)
+  // value into the trace; at or above it, that value is never a new best.
+  const Eigen::VectorXd limit = threshold.cwiseMax(best_value_);
+  return evaluate(X, f, std::span<const double>(limit.data(), limit.size()));
+}
+
+Eigen::Index EvaluationContext::evaluate(const Eigen::MatrixXd& X, Eigen::VectorXd& f,
+                                         std::span<const double> abandon_above) {
   if (X.rows() != dimension())
     throw std::logic_error("evaluate: candidates have " + std::to_string(X.rows()) +
                            " rows, the problem has dimension " + std::to_string(dimension()));
@@ -89,7 +106,9 @@ Eigen::Index EvaluationContext::evaluate(const Eigen::MatrixXd& X, Eigen::Vector
     if (!bounds().contains(X.col(i)))
       throw std::logic_error("optimizer evaluated a point outside the bounds");
   }
-  problem_.evaluate(X.leftCols(n), f.head(n));
+  EvaluationOptions options = options_;
+  if (!abandon_above.empty()) options.abandon_above = abandon_above.first(n);
+  problem_.evaluate_with(X.leftCols(n), f.head(n), options);
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!std::isfinite(f[i])) f[i] = kInf;
     record(X.col(i), f[i]);

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "framework/core/budget.hpp"
@@ -30,11 +31,28 @@ class EvaluationContext {
   const Bounds& bounds() const { return problem_.bounds(); }
   Rng& rng() { return rng_; }
 
+  // Threads each batch evaluation may use (EvaluationOptions::threads); 1
+  // unless the caller runs nothing else in parallel. Values do not depend on it.
+  void set_evaluation_threads(int threads) { options_.threads = threads; }
+  int evaluation_threads() const { return options_.threads; }
+  // Whether evaluate_against() may abandon losing candidates early (on by
+  // default; results are the same either way, only the time differs).
+  void set_early_abandonment(bool on) { early_abandonment_ = on; }
+
   // Evaluates the columns of X into f (resized to X.cols()). Returns how many
   // columns were evaluated, in order: fewer than X.cols() when the budget ran
   // out, and the rest of f is +inf. Throws std::logic_error for a point
   // outside the bounds (a plugin bug).
   Eigen::Index evaluate(const Eigen::MatrixXd& X, Eigen::VectorXd& f);
+  // The same for a caller that only needs to know whether candidate i beats
+  // threshold[i] (greedy one-to-one selection against its parent's
+  // fitness): a candidate that loses may get a value above its threshold
+  // instead of its exact fitness, when early abandonment is on and the
+  // problem supports it. Thresholds are first raised to the best-so-far, so
+  // an inexact value is never a new best: survivors, the best point and the
+  // trace are exactly those of evaluate().
+  Eigen::Index evaluate_against(const Eigen::MatrixXd& X, const Eigen::VectorXd& threshold,
+                                Eigen::VectorXd& f);
   // One candidate; +inf when the budget is already spent.
   double evaluate(const Eigen::VectorXd& x);
 
@@ -68,12 +86,15 @@ class EvaluationContext {
   void fail() { stop_reason_ = StopReason::Failed; }
 
  private:
+  Eigen::Index evaluate(const Eigen::MatrixXd& X, Eigen::VectorXd& f, std::span<const double> abandon_above);
   void record(const Eigen::Ref<const Eigen::VectorXd>& x, double value);
   void check_budget();
   std::optional<long> evaluation_limit() const;
 
   const Problem& problem_;
   Budget budget_;
+  EvaluationOptions options_;
+  bool early_abandonment_ = true;
   Rng rng_;
   std::chrono::steady_clock::time_point start_;
   std::optional<long> phase_limit_;

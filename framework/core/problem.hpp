@@ -2,6 +2,7 @@
 // A problem is "bounds + batch fitness": everything an optimizer may know.
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,22 @@ struct Bounds {
   Eigen::VectorXd clamp(const Eigen::Ref<const Eigen::VectorXd>& x) const;
 };
 
+// How one batch evaluation may run, decided by the caller that owns the
+// threads. The harness runs either several trials in parallel or the
+// candidates of one batch in parallel, never both: one active level of
+// parallelism, so the cores are not oversubscribed.
+struct EvaluationOptions {
+  // OpenMP threads the call may spread its candidates over; 1 keeps it on
+  // the calling thread.
+  int threads = 1;
+  // Early abandonment, for callers that only compare candidate i with
+  // abandon_above[i] (greedy selection against its parent): a problem may
+  // stop a candidate whose partial fitness already exceeds that value and
+  // report any value above it. Empty: every candidate is evaluated in full.
+  // Problems are free to ignore it.
+  std::span<const double> abandon_above;
+};
+
 class Problem {
  public:
   virtual ~Problem() = default;
@@ -32,6 +49,13 @@ class Problem {
   // Inf; the evaluation context maps those to +inf.
   virtual void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                         Eigen::Ref<Eigen::VectorXd> f) const = 0;
+  // The framework's entry point: evaluate() with the caller's options.
+  // Problems that can share a batch between threads override it; the
+  // values must not depend on options.threads. The default ignores them.
+  virtual void evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Ref<Eigen::VectorXd> f,
+                             const EvaluationOptions& /*options*/) const {
+    evaluate(X, f);
+  }
   // Facts for summary.json: data file, known optimum, noise floor, ...
   virtual nlohmann::json describe() const { return {{"name", name()}}; }
 

@@ -17,7 +17,9 @@ void run_synchronous_de(EvaluationContext& ctx, int np, const DeTrialBuilder& bu
   while (ctx.next_iteration()) {
     const auto order = rank_order(fx);
     build(DeGeneration{X, fx, order}, U);
-    const Eigen::Index evaluated = ctx.evaluate(U, fu);
+    // Selection only asks whether a trial beats its target, so a trial may
+    // be abandoned once it certainly does not (EvaluationContext).
+    const Eigen::Index evaluated = ctx.evaluate_against(U, fx, fu);
     if (observe) observe(fx, fu, evaluated);
     replace_if_not_worse(X, fx, U, fu, evaluated);
   }

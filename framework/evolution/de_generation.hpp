@@ -23,7 +23,9 @@ struct DeGeneration {
 // Fills U (dimension x NP) with the generation's trial vectors.
 using DeTrialBuilder = std::function<void(const DeGeneration&, Eigen::MatrixXd& U)>;
 // Sees the targets' and the trials' fitness of the first `evaluated` trials
-// before selection (for success counters).
+// before selection (for success counters). A trial worse than its target
+// may carry a value above the target's instead of its exact fitness (early
+// abandonment), so compare, do not measure, a losing trial.
 using DeOutcomeObserver = std::function<void(
     const Eigen::VectorXd& f_target, const Eigen::VectorXd& f_trial, Eigen::Index evaluated)>;
 

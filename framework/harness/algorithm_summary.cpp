@@ -29,7 +29,7 @@ AlgorithmSummary summarize(const std::string& label, const std::string& name,
   for (const auto& r : results) {
     s.wall_seconds += r.wall_seconds;
     if (r.failed()) {
-      ++s.failed;
+      if (s.failed++ == 0) s.first_failure = "trial " + std::to_string(r.trial) + ": " + r.message;
       continue;
     }
     finals.push_back(r.best);
@@ -46,7 +46,7 @@ AlgorithmSummary summarize(const std::string& label, const std::string& name,
   s.max = s.worst = finals.empty() ? nan : *std::max_element(finals.begin(), finals.end());
   s.mean = stats::mean(finals);
   s.median = stats::median(finals);
-  s.std = finals.size() < 2 ? 0.0 : stats::sample_std(finals);
+  s.std = finals.empty() ? nan : finals.size() < 2 ? 0.0 : stats::sample_std(finals);
   s.mean_evaluations = stats::mean(evaluations);
   s.mean_iterations = stats::mean(iterations);
   return s;
@@ -56,23 +56,26 @@ nlohmann::json AlgorithmSummary::to_json() const {
   nlohmann::json x = nlohmann::json::object();
   for (std::size_t i = 0; i < best_x.size() && i < parameter_names.size(); ++i)
     x[parameter_names[i]] = best_x[i];
-  return {{"label", label},
-          {"name", name},
-          {"params", params},
-          {"trials", trials},
-          {"failed", failed},
-          {"best", number_or_null(best)},
-          {"mean", number_or_null(mean)},
-          {"worst", number_or_null(worst)},
-          {"median", number_or_null(median)},
-          {"std", number_or_null(std)},
-          {"min", number_or_null(min)},
-          {"max", number_or_null(max)},
-          {"evaluations", number_or_null(mean_evaluations)},
-          {"iterations", number_or_null(mean_iterations)},
-          {"wall_seconds", wall_seconds},
-          {"best_trial", best_trial},
-          {"best_x", x}};
+  nlohmann::json j = {{"label", label},
+                      {"name", name},
+                      {"params", params},
+                      {"trials", trials},
+                      {"failed", failed},
+                      {"best", number_or_null(best)},
+                      {"mean", number_or_null(mean)},
+                      {"worst", number_or_null(worst)},
+                      {"median", number_or_null(median)},
+                      {"std", number_or_null(std)},
+                      {"min", number_or_null(min)},
+                      {"max", number_or_null(max)},
+                      {"evaluations", number_or_null(mean_evaluations)},
+                      {"iterations", number_or_null(mean_iterations)},
+                      {"wall_seconds", wall_seconds},
+                      {"best_trial", best_trial},
+                      {"best_x", x}};
+  // Only when there is one, so that summaries of clean runs keep their shape.
+  if (failed > 0) j["first_failure"] = first_failure;
+  return j;
 }
 
 }  // namespace hystbench

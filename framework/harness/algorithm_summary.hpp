@@ -14,7 +14,8 @@ struct AlgorithmSummary {
   std::string name;             // plugin name
   nlohmann::json params;        // validated parameters, defaults filled in
   long trials = 0;              // finished trials
-  long failed = 0;              // trials whose optimizer threw
+  long failed = 0;              // trials whose optimizer threw or found nothing finite
+  std::string first_failure;    // message of the first failed trial (trial order)
   // Statistics of the final best fitness over the successful trials:
   double best = 0.0;            // = min
   double mean = 0.0;

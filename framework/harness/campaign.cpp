@@ -4,6 +4,7 @@
 
 #include <exception>
 
+#include "framework/harness/thread_split.hpp"
 #include "framework/harness/trial_runner.hpp"
 
 namespace hystbench {
@@ -18,13 +19,22 @@ std::vector<std::vector<TrialResult>> run_campaign(const Problem& problem,
   const long tasks = algorithms * per_algorithm;
   std::vector<std::vector<TrialResult>> results(algorithms,
                                                 std::vector<TrialResult>(per_algorithm));
+  std::vector<char> done(tasks, 0);
+  for (const TrialResult& r : options.finished) {
+    done[r.algorithm_index * per_algorithm + (r.trial - range.first)] = 1;
+    results[r.algorithm_index][r.trial - range.first] = r;
+  }
   std::exception_ptr callback_error;
+  // A resumed run splits its threads by the trials it still has to run.
+  const long remaining = tasks - static_cast<long>(options.finished.size());
+  const ThreadSplit split = split_threads(remaining, options.threads);
 
-  #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads)
+  #pragma omp parallel for schedule(dynamic, 1) num_threads(split.trial_threads)
   for (long task = 0; task < tasks; ++task) {
+    if (done[task]) continue;
     const int a = static_cast<int>(task / per_algorithm);
     const long trial = range.first + task % per_algorithm;
-    TrialResult r = run_trial(problem, experiment, a, trial);
+    TrialResult r = run_trial(problem, experiment, a, trial, split.evaluation_threads);
     #pragma omp critical(hystbench_trial_done)
     {
       // An exception must not leave an OpenMP region; keep the first.

@@ -17,6 +17,9 @@ struct CampaignOptions {
   std::function<void(const TrialResult&)> on_trial_done;
   // Which trials to run; all of them when empty (size 0).
   TrialRange trials;
+  // Trials finished by an earlier run of the same campaign (--resume): put
+  // into the results as they are, not run again, not reported again.
+  std::vector<TrialResult> finished;
 };
 
 // Results grouped per algorithm, each group in trial order (only the trials

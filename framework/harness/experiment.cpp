@@ -14,8 +14,18 @@
 namespace hystbench {
 namespace {
 
+// What a missing top-level key could look like, for the message.
+std::string example_of(const std::string& key) {
+  if (key == "name") return R"("name": "demo")";
+  if (key == "problem") return R"("problem": {"type": "function", "name": "sphere", "dimension": 10})";
+  if (key == "budget") return R"("budget": {"evaluations": 5000})";
+  if (key == "trials") return R"("trials": 10)";
+  return R"("algorithms": [{"name": "de"}])";
+}
+
 const nlohmann::json& required(const nlohmann::json& j, const std::string& key) {
-  if (!j.contains(key)) throw InputError("missing key \"" + key + "\"");
+  if (!j.contains(key))
+    throw InputError("missing key \"" + key + "\"; add it, e.g. " + example_of(key));
   return j.at(key);
 }
 
@@ -109,7 +119,7 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
 
 Experiment Experiment::load(const std::filesystem::path& file) {
   std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open the experiment file");
+  if (!in) throw InputError(file.string() + ": cannot open the experiment file; check the path");
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);

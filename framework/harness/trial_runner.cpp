@@ -23,7 +23,7 @@ void run_with_polish(Optimizer& optimizer, const PolishSpec& polish, long evalua
 }  // namespace
 
 TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
-                      long trial) {
+                      long trial, int evaluation_threads) {
   const AlgorithmSpec& spec = experiment.algorithms[algorithm_index];
   TrialResult r;
   r.label = spec.label;
@@ -32,6 +32,7 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
   r.seed = trial_seed(experiment.seed, spec.label, static_cast<std::uint64_t>(trial));
 
   EvaluationContext ctx(problem, experiment.budget, r.seed);
+  ctx.set_evaluation_threads(evaluation_threads);
   try {
     const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
     auto optimizer = info.create(Params(spec.params));
@@ -44,6 +45,13 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
   } catch (const std::exception& e) {
     ctx.fail();
     r.message = e.what();
+  }
+  // Nothing finite to report is a failure, not a result: it must not sit in
+  // the statistics as an ordinary (if bad) fitness.
+  if (ctx.stop_reason() != StopReason::Failed && !std::isfinite(ctx.best_value())) {
+    ctx.fail();
+    r.message = "no candidate had a finite fitness: every evaluation diverged or gave NaN "
+                "(check the problem's bounds and data)";
   }
   r.best = ctx.best_value();
   r.evaluations = ctx.evaluations();

@@ -17,8 +17,9 @@ std::filesystem::path resolve_data_path(const std::string& name,
     if (fs::exists(dir / given)) return (base_dir / dir.lexically_relative(start) / given).lexically_normal();
     if (dir == dir.parent_path()) break;
   }
-  throw InputError(key + " = \"" + name + "\": file not found (looked in the current folder, in " +
-                   base_dir.string() + " and in the folders above it)");
+  throw InputError(key + " = \"" + name + "\": file not found; check the path (a relative one is "
+                   "looked up in the current folder, then in " + base_dir.string() +
+                   " and the folders above it)");
 }
 
 }  // namespace hystbench

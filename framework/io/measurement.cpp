@@ -18,6 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kRoleList = "t, u, y, segment";
+// Squares of larger values, summed over a record, overflow a double.
+constexpr double kLargestValue = 1e150;
 constexpr const char* kColumnsHint = "--columns t=t_s,u=u_N,y=y_m";
 
 // Where a problem is. Messages are only built when one occurs, so reading a
@@ -166,12 +168,15 @@ double parse_number(std::string_view field, const Location& at, const std::strin
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   const std::string quoted = "'" + std::string(field) + "'";
   if (ec == std::errc::result_out_of_range)
-    fail(at, column, quoted + " is out of the range of a double");
+    fail(at, column, quoted + " is out of the range of a double; rescale the column (other units)");
   if (ec != std::errc{} || end != digits.data() + digits.size())
     fail(at, column, quoted + " is not a number; fix the value or comment the line out with '#'");
   if (!std::isfinite(value))
     fail(at, column,
          quoted + " is not a finite number (NaN and Inf are not allowed); fix or remove the row");
+  if (std::abs(value) > kLargestValue)
+    fail(at, column, quoted + " is too large: squared errors of values beyond 1e150 overflow; "
+                              "rescale the column (other units)");
   return value;
 }
 
@@ -378,7 +383,7 @@ ColumnMap ColumnMap::parse(const std::string& spec) {
     const std::size_t comma = std::min(rest.find(','), rest.size());
     const std::string_view entry = trim(rest.substr(0, comma));
     const std::size_t eq = entry.find('=');
-    const std::string quoted = "column mapping entry '" + std::string(entry) + "'";
+    const std::string quoted = "--columns: entry '" + std::string(entry) + "'";
     if (eq == std::string_view::npos || trim(entry.substr(eq + 1)).empty())
       throw InputError(quoted + " is not role=name; write e.g. t=t_s,u=u_N,y=y_m with roles " +
                        kRoleList);

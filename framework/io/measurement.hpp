@@ -34,11 +34,11 @@ struct ColumnMap {
   nlohmann::json to_json() const;
 };
 
-// Reads a measurement CSV (DESIGN.md §6). Throws InputError naming the file,
-// line and column for: missing file, empty file, missing column, duplicate
-// column, non-numeric or non-finite value, ragged row, time not increasing
-// or not evenly sampled, fewer than two samples. Accepts a UTF-8 BOM, CRLF
-// line ends, quoted fields, extra columns and '#' comment lines.
+// Reads a measurement CSV (DESIGN.md §6). InputError naming file, line and
+// column for: missing or empty file, missing or duplicate column, a value not
+// a finite number or beyond 1e150, ragged row, time not increasing or not
+// evenly sampled, fewer than two samples. Accepts a UTF-8 BOM, CRLF line
+// ends, quoted fields, extra columns and '#' comment lines.
 Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns = {});
 
 // Writes t,u,y[,segment] with 17 significant digits; `comments` become '#'

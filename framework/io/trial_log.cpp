@@ -2,6 +2,10 @@
 
 #include <unistd.h>
 
+#include <fstream>
+#include <sstream>
+#include <string>
+
 #include "framework/core/error.hpp"
 
 namespace hystbench {
@@ -22,6 +26,32 @@ void TrialLog::append(const TrialResult& r) {
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0)
     throw InputError(path_.string() + ": writing failed (disk full?)");
   fsync(fileno(file_));
+}
+
+TrialLogContents read_trial_log(const std::filesystem::path& file, bool tolerate_torn_end) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open; is this a results folder of `hystbench run`?");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const bool ends_in_newline = all.empty() || all.back() == '\n';
+  TrialLogContents out;
+  std::istringstream lines(all);
+  std::string line;
+  for (long number = 1; std::getline(lines, line); ++number) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    try {
+      out.trials.push_back(TrialResult::from_json(nlohmann::json::parse(line)));
+    } catch (const std::exception& e) {
+      if (tolerate_torn_end && !ends_in_newline && lines.peek() == EOF) {
+        out.torn_line = number;
+        break;
+      }
+      throw InputError(file.string() + " line " + std::to_string(number) +
+                       ": not a trial record: " + e.what());
+    }
+  }
+  return out;
 }
 
 }  // namespace hystbench

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "framework/core/error.hpp"
+#include "framework/io/trial_log.hpp"
 
 namespace hystbench {
 namespace {
@@ -23,29 +24,15 @@ nlohmann::json read_summary(const std::filesystem::path& file) {
   }
 }
 
-std::vector<TrialResult> read_trials(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open; is this a results folder of `hystbench run`?");
-  std::vector<TrialResult> trials;
-  std::string line;
-  for (long number = 1; std::getline(in, line); ++number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    try {
-      trials.push_back(TrialResult::from_json(nlohmann::json::parse(line)));
-    } catch (const std::exception& e) {
-      throw InputError(file.string() + " line " + std::to_string(number) +
-                       ": not a trial record: " + e.what());
-    }
-  }
-  return trials;
-}
-
 }  // namespace
 
 ResultsFolder read_results_folder(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir))
     throw InputError(dir.string() + ": not a folder; give results folders of `hystbench run`");
-  return {dir, read_summary(dir / "summary.json"), read_trials(dir / "trials.jsonl")};
+  if (!std::filesystem::exists(dir / "summary.json") && std::filesystem::exists(dir / "campaign.json"))
+    throw InputError(dir.string() + ": has no summary.json: its run was stopped before the end; "
+                     "finish it with `hystbench run EXPERIMENT --out " + dir.string() + " --resume`");
+  return {dir, read_summary(dir / "summary.json"), read_trial_log(dir / "trials.jsonl").trials};
 }
 
 }  // namespace hystbench

@@ -48,7 +48,9 @@ std::vector<stats::EcdfStep> ecdf_steps(const std::vector<TrialResult>& trials, 
   std::vector<stats::EcdfStep> steps{{1, 0.0}};
   if (trials.empty()) return steps;
   std::vector<stats::TrialRecord> records;
-  for (const auto& r : trials) records.push_back({r.evaluations, r.trace});
+  // A failed trial never reaches the target, as in the statistics table.
+  for (const auto& r : trials)
+    records.push_back({r.evaluations, r.failed() ? std::vector<TracePoint>{} : r.trace});
   for (const auto& s : stats::runtime_ecdf(records, target)) steps.push_back(s);
   steps.push_back({last, steps.back().fraction});
   return steps;

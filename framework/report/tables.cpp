@@ -88,6 +88,17 @@ std::string caption(const ReportContext& ctx, Format f) {
   return text + " Fitness statistics over the successful trials; lowest value per column in bold.";
 }
 
+// Why trials failed, under the table: a failure is a result to explain,
+// not a row to hide.
+std::string failure_notes(const std::vector<AlgorithmSummary>& rows) {
+  std::string out;
+  for (const auto& r : rows)
+    if (r.failed > 0)
+      out += "- " + r.label + ": " + std::to_string(r.failed) + " of " + std::to_string(r.trials) +
+             " trials failed; first, " + r.first_failure + "\n";
+  return out.empty() ? out : "\nFailed trials (every message is in `trials.jsonl`):\n" + out;
+}
+
 }  // namespace
 
 std::string table_markdown(const std::vector<AlgorithmSummary>& rows, const ReportContext& ctx) {
@@ -98,7 +109,7 @@ std::string table_markdown(const std::vector<AlgorithmSummary>& rows, const Repo
   out += "|\n";
   for (const auto& cells : body_cells(rows, Format::Markdown))
     out += "| " + join(cells, " | ") + " |\n";
-  return out;
+  return out + failure_notes(rows);
 }
 
 std::string table_latex(const std::vector<AlgorithmSummary>& rows, const ReportContext& ctx) {

@@ -14,11 +14,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Final fitness of the trials whose optimizer did not throw.
+// Final fitness of every trial; a failed one counts as +inf, so that it
+// ranks last (tied with the other failures) instead of vanishing from the
+// comparison and flattering its algorithm.
 std::vector<double> finals(const std::vector<TrialResult>& trials) {
   std::vector<double> out;
   for (const auto& r : trials)
-    if (!r.failed()) out.push_back(r.best);
+    out.push_back(r.failed() ? std::numeric_limits<double>::infinity() : r.best);
   return out;
 }
 
@@ -40,11 +42,13 @@ std::size_t reference_index(const Experiment& e,
   return best;
 }
 
-// A crashed trial still spent its evaluations, so every trial counts in the
-// runtime measures (as an unsuccessful one when it crashed early).
+// A failed trial still spent its evaluations, so every trial counts in the
+// runtime measures; a failed one never as a success, whatever it reached
+// before failing.
 std::vector<stats::TrialRecord> records(const std::vector<TrialResult>& trials) {
   std::vector<stats::TrialRecord> out;
-  for (const auto& r : trials) out.push_back({r.evaluations, r.trace});
+  for (const auto& r : trials)
+    out.push_back({r.evaluations, r.failed() ? std::vector<TracePoint>{} : r.trace});
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "problems/hammerstein/hammerstein_model.hpp"
 
 #include "framework/core/error.hpp"
+#include "problems/hammerstein/recurrence_coefficients.hpp"
 
 #include <cmath>
 #include <limits>
@@ -13,40 +14,25 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Roots of z^2 + p z + q inside the unit circle.
 bool stable_second_order(double p, double q) { return std::abs(q) < 1.0 && std::abs(p) < 1.0 + q; }
 
-// Coefficients of the bilinear mass-spring-damper recursion
-// r[k] = -(f1 r[k-1] + g1 r[k-2] - e h1[k] - f h1[k-1] - g h1[k-2]) / e1.
-struct MsdCoefficients {
-  double e, f, g, e1, f1, g1;
-  MsdCoefficients(const HammersteinParams& p, double Ts)
-      : e(Ts * Ts),
-        f(2 * Ts * Ts),
-        g(Ts * Ts),
-        e1(4 * p.M + 2 * p.D * Ts + p.K * Ts * Ts),
-        f1(2 * p.K * Ts * Ts - 8 * p.M),
-        g1(4 * p.M - 2 * p.D * Ts + p.K * Ts * Ts) {}
-};
-
 // One pass over the record. `Sink` receives (k, y_hat[k]) and returns false
 // to abandon the simulation.
 template <class Sink>
 void run_model(const HammersteinParams& p, const Eigen::VectorXd& u, double Ts, BoucWenForm form,
                Sink&& sink) {
-  // The recurrences are latency-bound: coefficients are normalised by e1
-  // once, and in each sum the previous sample's state is added last, so
-  // that only one multiply and one add separate consecutive samples.
-  const MsdCoefficients m(p, Ts);
-  const double k_h0 = m.e / m.e1, k_h1 = m.f / m.e1, k_h2 = m.g / m.e1;
-  const double k_r1 = -m.f1 / m.e1, k_r2 = -m.g1 / m.e1;
-  const double aL = p.alpha * p.L;
+  // The recurrences are latency-bound: in each sum the previous sample's
+  // state is added last, so that only one multiply and one add separate
+  // consecutive samples. The batched kernel repeats these expressions
+  // operation for operation (batched_sse.cpp); change both together.
+  const RecurrenceCoefficients q(p, Ts);
   const bool increment = form == BoucWenForm::Increment;
   double h = 0, u_prev = 0, h1_1 = 0, h1_2 = 0, r_1 = 0, r_2 = 0, r1_1 = 0, r1_2 = 0;
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     const double drive = increment ? u[k] - u_prev : u[k];
     // h + aL du - beta |du| h - gamma du |h|, grouped by h
-    h = (h * (1.0 - p.beta * std::abs(drive)) + aL * drive) - p.gamma * drive * std::abs(h);
-    const double h1 = p.d1 * u[k] + p.d2 * u[k] * u[k] - h;
-    const double r = (k_h0 * h1 + k_h1 * h1_1 + k_h2 * h1_2 + k_r2 * r_2) + k_r1 * r_1;
-    const double r1 = (p.a * r_1 + p.b * r_2 - p.d * r1_2) - p.c * r1_1;
+    h = (h * (1.0 - q.beta * std::abs(drive)) + q.aL * drive) - q.gamma * drive * std::abs(h);
+    const double h1 = q.d1 * u[k] + q.d2 * u[k] * u[k] - h;
+    const double r = (q.k_h0 * h1 + q.k_h1 * h1_1 + q.k_h2 * h1_2 + q.k_r2 * r_2) + q.k_r1 * r_1;
+    const double r1 = (q.a * r_1 + q.b * r_2 - q.d * r1_2) - q.c * r1_1;
     if (!sink(k, r1)) return;
     u_prev = u[k];
     h1_2 = h1_1;

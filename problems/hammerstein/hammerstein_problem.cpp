@@ -6,6 +6,7 @@
 #include "framework/core/registry.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/io/truth_file.hpp"
+#include "problems/hammerstein/batched_sse.hpp"
 
 namespace hystbench {
 namespace {
@@ -93,9 +94,13 @@ std::string HammersteinProblem::name() const {
 
 void HammersteinProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                                   Eigen::Ref<Eigen::VectorXd> f) const {
-  for (Eigen::Index i = 0; i < X.cols(); ++i)
-    f[i] = hammerstein_sse(HammersteinParams::from_vector(X.col(i)), data_.u, data_.y,
-                           data_.sample_time, form_);
+  evaluate_with(X, f, {});
+}
+
+void HammersteinProblem::evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                                       Eigen::Ref<Eigen::VectorXd> f,
+                                       const EvaluationOptions& options) const {
+  hammerstein_sse_batched(X, data_.u, data_.y, data_.sample_time, form_, f, options);
 }
 
 Eigen::VectorXd HammersteinProblem::simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const {

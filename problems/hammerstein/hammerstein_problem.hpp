@@ -37,8 +37,12 @@ class HammersteinProblem : public Problem, public SignalModelProblem {
 
   std::string name() const override;
   const Bounds& bounds() const override { return bounds_; }
+  // Batched and vectorised (batched_sse.hpp); each value equals
+  // hammerstein_sse() of its column bit for bit. evaluate() uses one thread.
   void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                 Eigen::Ref<Eigen::VectorXd> f) const override;
+  void evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Ref<Eigen::VectorXd> f,
+                     const EvaluationOptions& options) const override;
   nlohmann::json describe() const override;
 
   const Eigen::VectorXd& time() const override { return data_.t; }
