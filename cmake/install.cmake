@@ -9,7 +9,8 @@ install(TARGETS hystbench_core hystbench
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY framework problems
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hystbench
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp"
+        PATTERN "cluster" EXCLUDE)  # part of the command, not of the library
 install(EXPORT hystbenchTargets
         NAMESPACE hystbench::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hystbench)

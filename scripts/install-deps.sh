@@ -5,7 +5,8 @@
 set -euo pipefail
 
 packages=(cmake g++ make libeigen3-dev libnlopt-cxx-dev nlohmann-json3-dev
-          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+          libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
+          libopenmpi-dev openmpi-bin)
 # Only the peer comparison with pagmo2 (benchmarks/peer) needs these; the
 # build skips it where they are missing, so failing to get them stops nothing.
 optional=(libpagmo-dev)

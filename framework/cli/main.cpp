@@ -4,13 +4,19 @@
 #include <vector>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cluster/cluster.hpp"
 #include "framework/core/error.hpp"
 
 int main(int argc, char** argv) {
+  const hystbench::cluster::Session mpi(argc, argv);
   CLI::App app{"hystbench: benchmark optimizers on the identification of hysteresis models "
                "(piezoelectric / MFC actuators) over repeated seeded trials"};
   app.require_subcommand(1);
+#ifdef HYSTBENCH_WITH_MPI
+  app.set_version_flag("--version", HYSTBENCH_VERSION " (with MPI)");
+#else
   app.set_version_flag("--version", HYSTBENCH_VERSION);
+#endif
   std::vector<std::pair<CLI::App*, hystbench::cli::Action>> commands;
   for (auto add : {hystbench::cli::add_list_command, hystbench::cli::add_run_command,
                    hystbench::cli::add_simulate_command, hystbench::cli::add_fit_command,
@@ -23,12 +29,17 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
+    // Every rank parsed the same command line; rank 0 alone says so.
+    const int code = hystbench::cluster::is_coordinator() ? app.exit(e) : e.get_exit_code();
     return code == 0 ? 0 : 2;  // bad command line is bad input
   }
   try {
     for (auto& [command, action] : commands)
-      if (command->parsed()) action();
+      // Under mpirun only `run` is spread over the ranks; rank 0 runs the others.
+      if (command->parsed() && (command->get_name() == "run" || hystbench::cluster::is_coordinator()))
+        action();
+  } catch (const hystbench::cluster::RankStopped& stopped) {
+    return stopped.exit_code;
   } catch (const hystbench::InputError& e) {
     std::cerr << "hystbench: error: " << e.what() << "\n";
     return 2;

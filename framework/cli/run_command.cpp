@@ -10,6 +10,7 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/interrupt_guard.hpp"
+#include "framework/cluster/cluster.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
 #include "framework/harness/campaign.hpp"
@@ -170,9 +171,11 @@ void run(const RunOptions& o) {
   InterruptGuard interrupt;
   const RunInputs in = read_inputs(o);
   const Experiment& experiment = in.experiment;
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  // Under mpirun the ranks other than 0 only run the trials rank 0 hands out.
+  if (cluster::is_worker()) return cluster::serve_trials(*in.problem, experiment, threads);
   const auto identity = campaign_identity(experiment, *in.problem, in.range);
   ResumedTrials resumed = o.resume ? resume_trials(in.dir, identity, experiment, in.range) : ResumedTrials{};
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 
   start_output_folder(in.dir, o.force, identity);
   TrialLog log(in.dir / "trials.jsonl");
@@ -184,7 +187,7 @@ void run(const RunOptions& o) {
   announce(experiment, *in.problem, in.range, threads, o.resume ? std::optional<long>(kept) : std::nullopt,
            total - kept);
   Progress progress(total - kept, stderr_is_terminal());
-  const auto results = run_campaign(*in.problem, experiment,
+  const auto results = cluster::run_campaign(*in.problem, experiment,
                                     {threads, [&](const TrialResult& r) {
                                        // Under the interrupt lock: Ctrl-C never tears a line.
                                        std::lock_guard<std::mutex> lock(interrupt.mutex());
@@ -227,8 +230,10 @@ Action add_run_command(CLI::App& app) {
                 "only the missing ones");
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
-    load_plugins();
-    run(*o);
+    cluster::run_on_all_ranks([&] {
+      load_plugins();
+      run(*o);
+    });
   };
 }
 
