@@ -24,12 +24,18 @@ std::string folder_name(const ResultsFolder& folder) {
   return name.empty() ? folder.dir.lexically_normal().parent_path().filename().string() : name;
 }
 
-// Final fitness of every trial per label; a failed trial counts as +inf so
-// that it ranks its algorithm last rather than vanishing from the mean.
+// Final fitness of every trial per label, in trial order: trials.jsonl is
+// in finishing order, which varies with threads, and the mean must not
+// depend on it. A failed trial counts as +inf so that it ranks its
+// algorithm last rather than vanishing from the mean.
 std::map<std::string, std::vector<double>> finals_by_label(const ResultsFolder& folder) {
+  std::vector<const TrialResult*> trials;
+  for (const auto& t : folder.trials) trials.push_back(&t);
+  std::stable_sort(trials.begin(), trials.end(),
+                   [](const TrialResult* a, const TrialResult* b) { return a->trial < b->trial; });
   std::map<std::string, std::vector<double>> finals;
-  for (const auto& t : folder.trials)
-    finals[t.label].push_back(t.failed() ? std::numeric_limits<double>::infinity() : t.best);
+  for (const auto* t : trials)
+    finals[t->label].push_back(t->failed() ? std::numeric_limits<double>::infinity() : t->best);
   return finals;
 }
 
