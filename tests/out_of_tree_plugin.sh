@@ -15,7 +15,11 @@ cmake --build "$work/plugin" >/dev/null
 
 hystbench="$work/prefix/bin/hystbench"
 plugin="$work/plugin/random_search.so"
-"$hystbench" list --plugin "$plugin" | grep -q "random_search - uniform random sampling"
+# Output goes to a file, not straight into `grep -q`: grep stops reading at the
+# first match, and under pipefail the SIGPIPE that then hits hystbench fails
+# the script whenever hystbench is still writing.
+"$hystbench" list --plugin "$plugin" > "$work/list.txt"
+grep -q "random_search - uniform random sampling" "$work/list.txt"
 
 cat > "$work/experiment.json" <<JSON
 {"name": "oot", "problem": {"type": "function", "name": "sphere", "dimension": 3},
