@@ -119,5 +119,24 @@ TEST(EvaluationContext, ProgressIsTheUsedFractionOfTheBudget) {
   EXPECT_DOUBLE_EQ(ctx.progress(), 0.25);
 }
 
+TEST(EvaluationContext, ALimitedPhaseCountsItsProgressFromWhereItStarts) {
+  // A polish cycle after the first runs a fresh optimizer: its schedules
+  // must start at 0, not where the trial's evaluation count stands.
+  FunctionProblem problem("sphere", 2);
+  Budget budget;
+  budget.evaluations = 100;
+  EvaluationContext ctx(problem, budget, 1);
+  Eigen::VectorXd f;
+  ctx.evaluate(points({1, 2, 3, 4}), f);
+  ctx.limit_evaluations(8);
+  EXPECT_DOUBLE_EQ(ctx.progress(), 0.0);
+  EXPECT_EQ(ctx.remaining_evaluations(), 8);
+  ctx.evaluate(points({1, 2}), f);
+  EXPECT_DOUBLE_EQ(ctx.progress(), 0.25);
+  ctx.lift_evaluation_limit();
+  EXPECT_DOUBLE_EQ(ctx.progress(), 0.06);
+  EXPECT_EQ(ctx.remaining_evaluations(), 94);
+}
+
 }  // namespace
 }  // namespace hystbench

@@ -16,6 +16,7 @@
 #include "framework/harness/campaign.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/trial_range.hpp"
+#include "framework/harness/trial_runner.hpp"
 #include "framework/io/measurement.hpp"
 #include "framework/io/trial_log.hpp"
 #include "framework/report/results_folder.hpp"
@@ -137,7 +138,9 @@ void announce(const Experiment& e, const Problem& problem, TrialRange range, int
 // Problem errors name the experiment file too: the key they name is in it.
 std::unique_ptr<Problem> build_problem(const Experiment& experiment, const std::string& file) {
   try {
-    return make_problem(experiment.problem, experiment.base_dir);
+    auto problem = make_problem(experiment.problem, experiment.base_dir);
+    check_polish(experiment, *problem);
+    return problem;
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }

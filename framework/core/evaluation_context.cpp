@@ -32,6 +32,7 @@ long EvaluationContext::remaining_evaluations() const {
 
 void EvaluationContext::lift_evaluation_limit() {
   phase_limit_.reset();
+  phase_start_ = 0;
   if (stop_reason_ == StopReason::Evaluations && remaining_evaluations() > 0)
     stop_reason_ = StopReason::Running;
 }
@@ -63,7 +64,10 @@ bool EvaluationContext::next_iteration() {
 
 double EvaluationContext::progress() const {
   double tau = 0.0;
-  if (const auto limit = evaluation_limit()) tau = std::max(tau, double(evaluations_) / double(*limit));
+  if (const auto limit = evaluation_limit()) {
+    const long start = phase_limit_ ? phase_start_ : 0;
+    tau = *limit > start ? std::max(tau, double(evaluations_ - start) / double(*limit - start)) : 1.0;
+  }
   if (budget_.iterations) tau = std::max(tau, double(iterations_) / double(*budget_.iterations));
   if (budget_.seconds) tau = std::max(tau, elapsed_seconds() / *budget_.seconds);
   return std::min(tau, 1.0);

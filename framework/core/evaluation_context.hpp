@@ -64,10 +64,13 @@ class EvaluationContext {
   // Evaluations still allowed (LONG_MAX without an evaluation budget).
   long remaining_evaluations() const;
 
-  // Polish support: the optimizer sees only the first `limit` evaluations
-  // as its budget (its schedules end there); lifting the limit hands the
-  // rest of the budget to the local search that follows.
-  void limit_evaluations(long limit) { phase_limit_ = limit; }
+  // Polish support: the optimizer sees only the next `count` evaluations
+  // as its budget (its schedules start now and end there); lifting the
+  // limit hands the rest of the budget to the local search that follows.
+  void limit_evaluations(long count) {
+    phase_start_ = evaluations_;
+    phase_limit_ = evaluations_ + count;
+  }
   void lift_evaluation_limit();
   // Fraction of the budget used, in [0, 1]: the tau of schedules.
   double progress() const;
@@ -98,6 +101,7 @@ class EvaluationContext {
   Rng rng_;
   std::chrono::steady_clock::time_point start_;
   std::optional<long> phase_limit_;
+  long phase_start_ = 0;
   long evaluations_ = 0;
   long iterations_ = 0;
   double best_value_ = std::numeric_limits<double>::infinity();

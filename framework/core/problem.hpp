@@ -78,4 +78,17 @@ class SignalModelProblem {
   virtual Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const = 0;
 };
 
+// Optional capability of problems whose fitness is a sum of squares,
+// f(x) = sum_i r_i(x)^2: local methods that exploit that structure
+// (Levenberg-Marquardt polish) need the residual vector, not just its sum.
+class LeastSquaresProblem {
+ public:
+  virtual ~LeastSquaresProblem() = default;
+  virtual Eigen::Index residual_count() const = 0;
+  // r (size residual_count()) for candidate x. Only called for candidates
+  // whose fitness is finite; r.squaredNorm() equals that fitness up to
+  // rounding (the summation order may differ).
+  virtual void residuals(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> r) const = 0;
+};
+
 }  // namespace hystbench

@@ -36,12 +36,17 @@ long positive_integer(const nlohmann::json& v, const std::string& key) {
 }
 
 PolishSpec read_polish(const nlohmann::json& j, const std::string& where) {
-  require_known_keys(j, {"algorithm", "fraction"}, where);
+  require_known_keys(j, {"algorithm", "fraction", "repeat"}, where);
   PolishSpec p;
   p.algorithm = j.value("algorithm", p.algorithm);
-  const auto& local = nlopt_local_algorithms();
+  std::vector<std::string> local = nlopt_local_algorithms();
+  local.push_back(PolishSpec::kLevenbergMarquardt);
   if (std::find(local.begin(), local.end(), p.algorithm) == local.end())
-    throw InputError(where + ".algorithm = \"" + p.algorithm + "\": use a local NLopt method: " + join(local));
+    throw InputError(where + ".algorithm = \"" + p.algorithm + "\": use a local NLopt method or " +
+                     PolishSpec::kLevenbergMarquardt + ": " + join(local));
+  const auto repeat = j.value("repeat", nlohmann::json(p.repeat));
+  if (!repeat.is_boolean()) throw InputError(where + ".repeat = " + repeat.dump() + ": must be true or false");
+  p.repeat = repeat.get<bool>();
   const auto fraction = j.value("fraction", nlohmann::json(p.fraction));
   if (!fraction.is_number() || !(fraction.get<double>() > 0 && fraction.get<double>() < 1))
     throw InputError(where + ".fraction = " + fraction.dump() + ": must be between 0 and 1 (exclusive)");
@@ -135,7 +140,12 @@ nlohmann::json Experiment::to_json() const {
   nlohmann::json algs = nlohmann::json::array();
   for (const auto& a : algorithms) {
     nlohmann::json j = {{"name", a.name}, {"label", a.label}, {"params", a.params}};
-    if (a.polish) j["polish"] = {{"algorithm", a.polish->algorithm}, {"fraction", a.polish->fraction}};
+    if (a.polish) {
+      j["polish"] = {{"algorithm", a.polish->algorithm}, {"fraction", a.polish->fraction}};
+      // Written only when set, so experiments without it keep their identity
+      // (campaign.json) from before the option existed.
+      if (a.polish->repeat) j["polish"]["repeat"] = true;
+    }
     algs.push_back(j);
   }
   nlohmann::json j = {{"name", name},       {"problem", problem}, {"budget", budget.to_json()},

@@ -18,12 +18,18 @@
 
 namespace hystbench {
 
-// "polish": {"algorithm": "LN_BOBYQA", "fraction": 0.2}: the last fraction of
-// the evaluation budget goes to an NLopt local search from the best point,
-// in the same budget and trace.
+// "polish": {"algorithm": "LN_BOBYQA", "fraction": 0.2, "repeat": false}:
+// the last fraction of the evaluation budget goes to a local search from the
+// best point, in the same budget and trace. The local search is an NLopt
+// method, or "levenberg_marquardt" on least-squares problems. With
+// "repeat", a local search that converges before the budget is spent is
+// followed by a fresh run of the optimizer on (1 - fraction) of what
+// remains and another polish, until the budget or the target ends the trial.
 struct PolishSpec {
+  static constexpr const char* kLevenbergMarquardt = "levenberg_marquardt";
   std::string algorithm = "LN_BOBYQA";
   double fraction = 0.2;
+  bool repeat = false;
 };
 
 struct AlgorithmSpec {

@@ -3,21 +3,61 @@
 #include <cmath>
 #include <exception>
 
+#include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
+#include "framework/local/levenberg_marquardt.hpp"
 #include "framework/local/nlopt_search.hpp"
 
 namespace hystbench {
+
+const LeastSquaresProblem& least_squares_of(const Problem& problem) {
+  const auto* lsq = dynamic_cast<const LeastSquaresProblem*>(&problem);
+  if (!lsq) throw InputError("problem " + problem.name() + " is not a least-squares problem");
+  return *lsq;
+}
+
+void check_polish(const Experiment& experiment, const Problem& problem) {
+  for (std::size_t i = 0; i < experiment.algorithms.size(); ++i) {
+    const auto& polish = experiment.algorithms[i].polish;
+    if (!polish || polish->algorithm != PolishSpec::kLevenbergMarquardt) continue;
+    if (!dynamic_cast<const LeastSquaresProblem*>(&problem))
+      throw InputError("algorithms[" + std::to_string(i) + "].polish.algorithm = \"" + polish->algorithm +
+                       "\" needs a least-squares problem (e.g. hammerstein), and " + problem.name() +
+                       " is not one; use a local NLopt method such as \"LN_BOBYQA\"");
+  }
+}
+
 namespace {
 
-void run_with_polish(Optimizer& optimizer, const PolishSpec& polish, long evaluations,
-                     EvaluationContext& ctx) {
-  const long reserved = std::lround(polish.fraction * double(evaluations));
-  ctx.limit_evaluations(evaluations - reserved);
-  optimizer.run(ctx);
-  ctx.lift_evaluation_limit();
+// Local searches of a trial polish start with steps of 1 % of each range:
+// small enough to stay in the start point's basin (see NloptSearch).
+constexpr double kPolishInitialStep = 0.01;
+
+void polish_from_best(const Problem& problem, const PolishSpec& polish, EvaluationContext& ctx) {
+  if (polish.algorithm == PolishSpec::kLevenbergMarquardt) {
+    run_levenberg_marquardt(ctx, least_squares_of(problem), ctx.best_point(), ctx.remaining_evaluations());
+    return;
+  }
   NloptSearch local;
   local.algorithm = polish.algorithm;
+  local.initial_step = kPolishInitialStep;
   run_nlopt(ctx, local, ctx.best_point(), ctx.remaining_evaluations());
+}
+
+// A cycle: a fresh optimizer on (1 - fraction) of the evaluations left, then
+// the local search from the best point. Without `repeat` there is one cycle.
+void run_with_polish(const Problem& problem, const AlgorithmSpec& spec, EvaluationContext& ctx) {
+  const PolishSpec& polish = *spec.polish;
+  const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
+  // A cycle shorter than this could not even seed a population.
+  const long minimum_cycle = 2L * ctx.dimension() + 2;
+  do {
+    const long left = ctx.remaining_evaluations();
+    ctx.limit_evaluations(left - std::lround(polish.fraction * double(left)));
+    info.create(Params(spec.params))->run(ctx);
+    ctx.lift_evaluation_limit();
+    polish_from_best(problem, polish, ctx);
+  } while (polish.repeat && !ctx.stopped() && ctx.remaining_evaluations() >= minimum_cycle);
 }
 
 }  // namespace
@@ -34,12 +74,10 @@ TrialResult run_trial(const Problem& problem, const Experiment& experiment, int 
   EvaluationContext ctx(problem, experiment.budget, r.seed);
   ctx.set_evaluation_threads(evaluation_threads);
   try {
-    const auto& info = OptimizerRegistry::instance().find(spec.name, "algorithm");
-    auto optimizer = info.create(Params(spec.params));
     if (spec.polish) {
-      run_with_polish(*optimizer, *spec.polish, *experiment.budget.evaluations, ctx);
+      run_with_polish(problem, spec, ctx);
     } else {
-      optimizer->run(ctx);
+      OptimizerRegistry::instance().find(spec.name, "algorithm").create(Params(spec.params))->run(ctx);
     }
     ctx.finish();
   } catch (const std::exception& e) {

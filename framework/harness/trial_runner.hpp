@@ -10,6 +10,12 @@ namespace hystbench {
 
 // `evaluation_threads`: threads each batch evaluation may use (see
 // thread_split.hpp); the result does not depend on it.
+// Refuses (InputError naming the key) a Levenberg-Marquardt polish on a
+// problem that is not a least-squares problem: checked before a run starts.
+void check_polish(const Experiment& experiment, const Problem& problem);
+// The problem's residuals; throws InputError when it has none.
+const LeastSquaresProblem& least_squares_of(const Problem& problem);
+
 TrialResult run_trial(const Problem& problem, const Experiment& experiment, int algorithm_index,
                       long trial, int evaluation_threads = 1);
 

@@ -81,6 +81,11 @@ std::string run_nlopt(EvaluationContext& ctx, const NloptSearch& search, Eigen::
   Objective data{ctx, allowed};
   nlopt::opt opt = make_optimizer(search, ctx.bounds(), allowed);
   opt.set_min_objective(objective, &data);
+  const Eigen::VectorXd range = ctx.bounds().upper - ctx.bounds().lower;
+  if (search.initial_step > 0 && range.minCoeff() > 0) {
+    const Eigen::VectorXd dx = search.initial_step * range;
+    opt.set_initial_step(std::vector<double>(dx.begin(), dx.end()));
+  }
   // NLopt's generator is per thread: seed it here, in the trial's thread.
   nlopt::srand(static_cast<unsigned long>(ctx.rng().next()));
   double f = 0.0;

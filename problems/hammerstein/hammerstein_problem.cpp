@@ -107,6 +107,11 @@ Eigen::VectorXd HammersteinProblem::simulate(const Eigen::Ref<const Eigen::Vecto
   return simulate_hammerstein(HammersteinParams::from_vector(x), data_.u, data_.sample_time, form_);
 }
 
+void HammersteinProblem::residuals(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                   Eigen::Ref<Eigen::VectorXd> r) const {
+  r = data_.y - simulate(x);
+}
+
 nlohmann::json HammersteinProblem::describe() const {
   nlohmann::json j = {{"name", name()},
                       {"type", "hammerstein"},

@@ -22,7 +22,7 @@
 
 namespace hystbench {
 
-class HammersteinProblem : public Problem, public SignalModelProblem {
+class HammersteinProblem : public Problem, public SignalModelProblem, public LeastSquaresProblem {
  public:
   struct Units {
     std::string u, y;
@@ -50,6 +50,9 @@ class HammersteinProblem : public Problem, public SignalModelProblem {
   const Eigen::VectorXd& measured() const override { return data_.y; }
   const std::vector<std::string>& segments() const override { return data_.segment; }
   Eigen::VectorXd simulate(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
+  // r = y - simulate(x): what the Levenberg-Marquardt polish works on.
+  Eigen::Index residual_count() const override { return data_.y.size(); }
+  void residuals(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> r) const override;
   std::string input_unit() const override { return units_.u; }
   std::string output_unit() const override { return units_.y; }
 
