@@ -55,15 +55,21 @@ Experiment experiment(long trials) {
                                "test");
 }
 
+CampaignOptions two_threads() {
+  CampaignOptions options;
+  options.threads = 2;
+  return options;
+}
+
 TEST(ThreadSplit, CampaignGivesItsThreadsToTheEvaluationsOfASingleTrial) {
   const ThreadProbe probe;
-  run_campaign(probe, experiment(1), {2, nullptr, {}});
+  run_campaign(probe, experiment(1), two_threads());
   EXPECT_EQ(probe.most_threads.load(), 2);
 }
 
 TEST(ThreadSplit, CampaignKeepsEvaluationsSingleThreadedWhenTrialsFillTheThreads) {
   const ThreadProbe probe;
-  run_campaign(probe, experiment(4), {2, nullptr, {}});
+  run_campaign(probe, experiment(4), two_threads());
   EXPECT_EQ(probe.most_threads.load(), 1);
 }
 
