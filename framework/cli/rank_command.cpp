@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/output_folder.hpp"
 #include "framework/core/error.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/ranking_tables.hpp"
@@ -21,23 +22,13 @@ struct RankOptions {
   bool force = false;
 };
 
-void prepare_output(const fs::path& dir, bool force) {
-  if (fs::exists(dir) && !fs::is_directory(dir))
-    throw InputError("--out " + dir.string() + ": exists and is not a folder");
-  if (fs::exists(dir / "ranks.md") && !force)
-    throw InputError("--out " + dir.string() + ": already holds a ranking; pass --force to "
-                     "replace it or choose another folder with --out");
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out " + dir.string() + ": cannot create this folder: " + ec.message());
-}
-
 void rank(const RankOptions& o) {
   std::vector<ResultsFolder> folders;
   for (const auto& f : o.folders) folders.push_back(read_results_folder(f));
   const auto statistic = o.by == "median" ? RankStatistic::Median : RankStatistic::Mean;
   const FriedmanRanking ranking = rank_folders(folders, statistic, o.control);
-  prepare_output(o.out, o.force);
+  check_output_folder(o.out, "ranks.md", o.force, "a ranking", "pass --force to replace it");
+  create_output_folder(o.out);
   auto files = write_ranking(o.out, ranking);
   std::string note;
   const auto images = render_figures(o.out, {files.back()}, note);

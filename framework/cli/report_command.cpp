@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/output_folder.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
 #include "framework/io/atomic_file.hpp"
@@ -50,14 +51,8 @@ void prepare_output(const ReportOptions& o, const fs::path& dir, const MergedRes
                        "folder so that its trials.jsonl is not replaced");
     return;
   }
-  if (fs::exists(dir) && !fs::is_directory(dir))
-    throw InputError("--out " + dir.string() + ": exists and is not a folder");
-  if (fs::exists(dir / "trials.jsonl") && !o.force)
-    throw InputError("--out " + dir.string() + ": already holds results; pass --force to replace "
-                     "them or choose another folder with --out");
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out " + dir.string() + ": cannot create this folder: " + ec.message());
+  check_output_folder(dir, "trials.jsonl", o.force, "results", "pass --force to replace them");
+  create_output_folder(dir);
   std::string lines;
   for (const auto& trials : m.results)
     for (const auto& r : trials) lines += r.to_json().dump() + "\n";

@@ -10,6 +10,7 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/interrupt_guard.hpp"
+#include "framework/cli/output_folder.hpp"
 #include "framework/cluster/cluster.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
@@ -40,13 +41,8 @@ namespace fs = std::filesystem;
 // Refuses to mix a new run into old results unless asked to. Only checks:
 // nothing is created or removed before every input has been read.
 void check_output_folder(const fs::path& dir, const RunOptions& o) {
-  if (fs::exists(dir) && !fs::is_directory(dir))
-    throw InputError("--out " + dir.string() + ": exists and is not a folder; choose another "
-                     "folder with --out");
-  if (fs::exists(dir / "trials.jsonl") && !o.force && !o.resume)
-    throw InputError("--out " + dir.string() + ": already holds results; pass --resume to run "
-                     "only the missing trials, --force to replace them, or choose another folder "
-                     "with --out");
+  hystbench::check_output_folder(dir, "trials.jsonl", o.force || o.resume, "results",
+                                 "pass --resume to run only the missing trials, --force to replace them");
 }
 
 // --data replaces the experiment's data file. The path is stored relative to
@@ -74,10 +70,7 @@ void start_output_folder(const fs::path& dir, bool force, const nlohmann::json& 
   // summary.json too: a forced run stopped midway must not look finished.
   if (force)
     for (const char* stale : {"trials.jsonl", "campaign.json", "summary.json"}) fs::remove(dir / stale, ec);
-  fs::create_directories(dir, ec);
-  if (ec)
-    throw InputError("--out " + dir.string() + ": cannot create this folder (" + ec.message() +
-                     "); choose a folder you can write to with --out");
+  create_output_folder(dir);
   try {
     write_campaign_identity(dir, identity);
   } catch (const InputError&) {
