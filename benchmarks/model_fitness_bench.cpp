@@ -1,7 +1,10 @@
 // Cost of one discovery-model fitness evaluation (simulate the effect chain
-// and sum the squared error), per sample, for a few model lists.
+// and sum the squared error), per sample, for a few model lists; and of a
+// batch of candidates of the seed chain one at a time and in blocks.
 #include <benchmark/benchmark.h>
+#include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/model/model_problem.hpp"
@@ -35,5 +38,56 @@ void BM_ModelFitness(benchmark::State& state, const char* model_list) {
 BENCHMARK_CAPTURE(BM_ModelFitness, gain, "none")->Arg(12000);
 BENCHMARK_CAPTURE(BM_ModelFitness, offset, "offset")->Arg(12000);
 BENCHMARK_CAPTURE(BM_ModelFitness, seed_chain, "hysteresis,asymmetry,msd,arx")->Arg(12000);
+
+// P candidates near a point where every effect of the seed chain is active.
+Eigen::MatrixXd seed_chain_candidates(const hystbench::Model& model, Eigen::Index p) {
+  Eigen::VectorXd x = model.neutral();
+  const auto names = model.parameter_names();
+  const std::vector<std::pair<std::string, double>> active = {
+      {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05}, {"msd.period", 0.02}, {"arx.a1", -0.5}, {"arx.b1", 0.1}};
+  for (const auto& [name, value] : active)
+    x[std::find(names.begin(), names.end(), name) - names.begin()] = value;
+  Eigen::MatrixXd X = x.replicate(1, p);
+  for (Eigen::Index j = 0; j < p; ++j) X(0, j) *= 1.0 + 1e-3 * double(j);
+  return X;
+}
+
+// One candidate at a time through ModelProblem::sse (the path of models
+// with an effect that has no batched form), or the whole batch through
+// evaluate() in blocks of kEffectLanes.
+template <bool kBatched>
+void BM_ModelProblem(benchmark::State& state) {
+  const Eigen::Index n = state.range(0), p = state.range(1);
+  const int threads = int(state.range(2));
+  const auto data = sine_data(n);
+  const auto model = hystbench::Model::parse("hysteresis,asymmetry,msd,arx");
+  const hystbench::ModelProblem problem(model, data);
+  const Eigen::MatrixXd X = seed_chain_candidates(model, p);
+  Eigen::VectorXd f(p);
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  for (auto _ : state) {
+    if constexpr (kBatched) {
+      problem.evaluate(X, f);
+    } else {
+#pragma omp parallel for schedule(dynamic)
+      for (Eigen::Index j = 0; j < p; ++j) f[j] = problem.sse(X.col(j));
+    }
+    benchmark::DoNotOptimize(f.data());
+  }
+  omp_set_num_threads(previous);
+  if (!f.allFinite()) state.SkipWithError("a candidate diverged");
+  state.counters["ns_per_sample_candidate"] = benchmark::Counter(
+      double(n * p), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void model_sizes(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"N", "P", "threads"});
+  for (const long threads : {1, 2})
+    for (const long n : {2000, 4000, 6000, 8000, 10000}) b->Args({n, 32, threads});
+  b->UseRealTime()->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK_TEMPLATE(BM_ModelProblem, false)->Name("BM_ModelProblemScalar")->Apply(model_sizes);
+BENCHMARK_TEMPLATE(BM_ModelProblem, true)->Name("BM_ModelProblemBatched")->Apply(model_sizes);
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "framework/core/registry.hpp"
+#include "framework/model/effect_lanes.hpp"
 
 namespace hystbench {
 
@@ -73,6 +74,14 @@ class Effect {
   // meaningless: the model's output is then +inf, never NaN.
   virtual bool apply(std::span<const double> p, const SignalContext& ctx,
                      Eigen::Ref<Eigen::VectorXd> signal) const = 0;
+
+  // Optional batched form (effect_lanes.hpp): kEffectLanes candidates at
+  // once. Must leave every lane exactly as apply() leaves it and clear ok[l]
+  // where apply() would return false. A model all of whose effects have it
+  // evaluates candidates in blocks; otherwise one at a time.
+  virtual bool has_lanes() const { return false; }
+  virtual void apply_lanes(const LaneParams& /*p*/, const LaneContext& /*ctx*/,
+                           std::span<LaneVector> /*signal*/, LaneMask& /*ok*/) const {}
 };
 
 struct EffectInfo {

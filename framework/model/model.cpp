@@ -197,6 +197,42 @@ bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData
   return y.allFinite();
 }
 
+bool Model::has_lanes() const {
+  return std::all_of(entries_.begin(), entries_.end(), [](const Entry& e) { return e.effect->has_lanes(); });
+}
+
+void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data,
+                           std::vector<LaneVector>& y, LaneMask& ok) const {
+  const Eigen::Index n = data.size();
+  y.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) y[k] = LaneVector{} + data.u[k];
+  ok.fill(true);
+  std::vector<LaneVector> stage_input = y;
+  LaneContext ctx{data.sample_time, &data.t, stage_input, substeps_};
+  auto run_stage = [&](EffectStage stage) {
+    for (const auto& e : entries_) {
+      if (e.info->stage != stage) continue;
+      LaneParams p;
+      for (int l = 0; l < kEffectLanes; ++l) p[l] = {X.col(l).data() + e.offset, e.info->params.size()};
+      e.effect->apply_lanes(p, ctx, y, ok);
+    }
+  };
+  // Copies into the same buffer: ctx.stage_input keeps pointing at it.
+  const auto enter_stage = [&] { std::copy(y.begin(), y.end(), stage_input.begin()); };
+  run_stage(EffectStage::Input);
+  enter_stage();
+  LaneVector gain{};
+  for (int l = 0; l < kEffectLanes; ++l) gain[l] = X(0, l);
+  for (auto& v : y) v *= gain;
+  run_stage(EffectStage::Nonlinearity);
+  for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output}) {
+    enter_stage();
+    run_stage(stage);
+  }
+  for (const auto& v : y)
+    for (int l = 0; l < kEffectLanes; ++l) ok[l] = ok[l] && std::isfinite(v[l]);
+}
+
 nlohmann::json Model::physical_values(const Eigen::Ref<const Eigen::VectorXd>& x,
                                       const SignalScales& scales) const {
   nlohmann::json out = nlohmann::json::object();

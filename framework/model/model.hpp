@@ -56,6 +56,13 @@ class Model {
   bool simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                 Eigen::VectorXd& y) const;
 
+  // True when every effect has a batched form: simulate_lanes() works.
+  bool has_lanes() const;
+  // simulate() for the kEffectLanes candidates in the columns of X at once:
+  // lane l of y holds exactly what simulate() gives for X.col(l), and ok[l]
+  // what it returns.
+  void simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data,
+                      std::vector<LaneVector>& y, LaneMask& ok) const;
   // Physical values {"gain": .., "hysteresis.A": .., ...} and their units
   // {"gain": "µm/V", ...} given the unit names of u and y.
   nlohmann::json physical_values(const Eigen::Ref<const Eigen::VectorXd>& x,

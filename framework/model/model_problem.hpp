@@ -17,21 +17,31 @@ class ModelProblem : public Problem {
 
   std::string name() const override { return "model(" + model_.text() + ")"; }
   const Bounds& bounds() const override { return bounds_; }
-  // Candidates are simulated in parallel (OpenMP; nested inside the
-  // parallel candidates of a diagnosis when nesting is enabled, so that the
-  // last long-running candidate still uses every core); each column's value
-  // does not depend on the thread that computed it.
+  // Candidates are simulated in blocks of kEffectLanes when every effect of
+  // the model has a batched form (effect_lanes.hpp), one at a time
+  // otherwise; blocks or candidates run in parallel (OpenMP; nested inside
+  // the parallel candidates of a diagnosis when nesting is enabled, so that
+  // the last long-running candidate still uses every core). Each value
+  // equals sse() of its column bit for bit, whatever the path and thread.
   void evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                 Eigen::Ref<Eigen::VectorXd> f) const override;
   nlohmann::json describe() const override;
 
   // Estimation SSE of one candidate (+inf when unstable).
   double sse(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // Whether evaluate() simulates blocks of candidates.
+  bool batched() const { return batched_; }
 
  private:
+  double sse_of(const Eigen::VectorXd& y) const;
+  // Candidates first .. first + kEffectLanes - 1 (fewer at the end) into f.
+  void evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Index first,
+                      Eigen::Ref<Eigen::VectorXd> f) const;
+
   const Model& model_;
   const ModelData& data_;
   Bounds bounds_;
+  bool batched_;
 };
 
 // The same problem seen through a subset of its parameters: the others stay

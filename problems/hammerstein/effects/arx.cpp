@@ -15,6 +15,7 @@
 // direction, 1 − z⁻¹ (and 1 − z⁻²); any second-order family through the
 // pass-through has this, and it disappears as soon as the block does
 // something. Away from neutral no direction is flat.
+#include <array>
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -47,24 +48,47 @@ class Arx : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext&,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
+    std::array<double, 5> c;
+    const EffectSetup s = setup(p, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
+    return std::isfinite(run(c, signal.data(), signal.size()));
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext&, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    run_lanes<5>(p, signal, ok, setup, [&](const std::array<LaneVector, 5>& c) {
+      return run(c, signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  // c = (b0, b1, b2, a1, a2).
+  static EffectSetup setup(std::span<const double> p, std::array<double, 5>& c) {
     const double a1 = p[0], a2 = p[1], b1 = p[2], b2 = p[3];
     for (double x : p)
-      if (!std::isfinite(x)) return false;
-    if (a1 == 0.0 && a2 == 0.0 && b1 == 0.0 && b2 == 0.0) return true;
-    if (!(std::abs(a2) < 1.0 && std::abs(a1) < 1.0 + a2)) return false;
-    const double b0 = (1.0 + a1 + a2) - (b1 + b2);
-    double* s = signal.data();
-    double w1 = 0.0, w2 = 0.0, y1 = 0.0, y2 = 0.0;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      const double w = s[k];
-      const double y = ((b0 * w + b1 * w1) + (b2 * w2 - a2 * y2)) - a1 * y1;
+      if (!std::isfinite(x)) return EffectSetup::Invalid;
+    if (a1 == 0.0 && a2 == 0.0 && b1 == 0.0 && b2 == 0.0) return EffectSetup::PassThrough;
+    if (!(std::abs(a2) < 1.0 && std::abs(a1) < 1.0 + a2)) return EffectSetup::Invalid;
+    c = {(1.0 + a1 + a2) - (b1 + b2), b1, b2, a1, a2};
+    return EffectSetup::Run;
+  }
+
+  // Returns the last output sample.
+  template <class V>
+  static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
+    const V b0 = c[0], b1 = c[1], b2 = c[2], a1 = c[3], a2 = c[4];
+    V w1{}, w2{}, y1{}, y2{};
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const V w = s[k];
+      const V y = ((b0 * w + b1 * w1) + (b2 * w2 - a2 * y2)) - a1 * y1;
       s[k] = y;
       w2 = w1;
       w1 = w;
       y2 = y1;
       y1 = y;
     }
-    return std::isfinite(y1);
+    return y1;
   }
 };
 

@@ -5,6 +5,7 @@
 // v is the stage input (normalised drive after the input effects); with the
 // model's gain·v this is the seed's d1·u + d2·u² (DESIGN.md §3; Fu et al.,
 // asymmetric Bouc-Wen for MFC). Neutral d2 = 0. Units: y/u².
+#include <array>
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -31,12 +32,34 @@ class Asymmetry : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double d2 = p[0];
-    if (!std::isfinite(d2)) return false;
-    if (d2 == 0.0) return true;
+    std::array<double, 1> c;
+    const EffectSetup s = setup(p, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    signal.array() += d2 * ctx.stage_input->array().square();
-    return true;
+    return std::isfinite(run(c, ctx.stage_input->data(), signal.data(), signal.size()));
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
+    run_lanes<1>(p, signal, ok, setup, [&](const std::array<LaneVector, 1>& c) {
+      return run(c, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  static EffectSetup setup(std::span<const double> p, std::array<double, 1>& c) {
+    c = {p[0]};
+    if (!std::isfinite(c[0])) return EffectSetup::Invalid;
+    return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
+  }
+
+  // signal += d2 * v^2; returns d2 (finite: nothing here can diverge).
+  template <class V>
+  static V run(const std::array<V, 1>& c, const V* v, V* s, Eigen::Index n) {
+    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0] * (v[k] * v[k]);
+    return c[0];
   }
 };
 

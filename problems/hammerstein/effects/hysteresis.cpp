@@ -14,6 +14,7 @@
 // Neutral: A = 0 keeps h ≡ 0 whatever β and γ are.
 // Units: A in y/u; β and γ in 1/u (β·|Δv| and γ·Δv are pure numbers).
 // A diverging loop (large β·|Δv| with a violent drive) makes apply false.
+#include <array>
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -45,24 +46,45 @@ class Hysteresis : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double A = p[0], beta = p[1], gamma = p[2];
-    if (!std::isfinite(A) || !std::isfinite(beta) || !std::isfinite(gamma)) return false;
-    if (A == 0.0) return true;
+    std::array<double, 3> c;
+    const EffectSetup s = setup(p, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    const double* v = ctx.stage_input->data();
-    double* s = signal.data();
-    const Eigen::Index n = signal.size();
-    double h = 0.0, v_prev = 0.0;
+    return std::isfinite(run(c, ctx.stage_input->data(), signal.data(), signal.size()));
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
+    run_lanes<3>(p, signal, ok, setup, [&](const std::array<LaneVector, 3>& c) {
+      return run(c, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  // c = (A, beta, gamma).
+  static EffectSetup setup(std::span<const double> p, std::array<double, 3>& c) {
+    c = {p[0], p[1], p[2]};
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) return EffectSetup::Invalid;
+    return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
+  }
+
+  // One candidate (V = double) or a block (V = LaneVector); returns h at the end.
+  template <class V>
+  static V run(const std::array<V, 3>& c, const V* v, V* s, Eigen::Index n) {
+    const V A = c[0], beta = c[1], gamma = c[2];
+    V h{}, v_prev{};
     for (Eigen::Index k = 0; k < n; ++k) {
-      const double dv = v[k] - v_prev;
+      const V dv = v[k] - v_prev;
       v_prev = v[k];
-      h = (h * (1.0 - beta * std::abs(dv)) + A * dv) - gamma * dv * std::abs(h);
+      h = (h * (1.0 - beta * lane_abs(dv)) + A * dv) - gamma * dv * lane_abs(h);
       s[k] -= h;
       // Once non-finite, h stays non-finite; checking now and then ends a
       // diverging run early without a test on every sample.
-      if ((k & 1023) == 1023 && !std::isfinite(h)) return false;
+      if ((k & 1023) == 1023 && none_finite(h)) return h;
     }
-    return std::isfinite(h);
+    return h;
   }
 };
 

@@ -19,6 +19,7 @@
 // Bilinear discretisation keeps the pole pair inside the unit circle for any
 // period > 0 and ζ > 0; ζ ≤ 0 (undamped or unstable) or a negative period
 // makes apply false.
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -52,32 +53,56 @@ class Msd : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
+    std::array<double, 5> c;
+    const EffectSetup s = setup(p, ctx.sample_time, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
+    return std::isfinite(run(c, signal.data(), signal.size()));
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    const auto lane_setup = [&](std::span<const double> q, std::array<double, 5>& c) {
+      return setup(q, ctx.sample_time, c);
+    };
+    run_lanes<5>(p, signal, ok, lane_setup, [&](const std::array<LaneVector, 5>& c) {
+      return run(c, signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  // c = (n0, n1, n2, a1, a2) of G = 1 - H.
+  static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 5>& c) {
     const double period = p[0], zeta = p[1];
-    if (!std::isfinite(period) || !std::isfinite(zeta) || period < 0.0) return false;
-    if (period == 0.0) return true;
-    if (!(zeta > 0.0) || !(ctx.sample_time > 0.0) || !std::isfinite(ctx.sample_time))
-      return false;
-    // With c = 2κ/Ts and q = 2ζc, substituting s = (2/Ts)(z−1)/(z+1) and
+    if (!std::isfinite(period) || !std::isfinite(zeta) || period < 0.0) return EffectSetup::Invalid;
+    if (period == 0.0) return EffectSetup::PassThrough;
+    if (!(zeta > 0.0) || !(Ts > 0.0) || !std::isfinite(Ts)) return EffectSetup::Invalid;
+    // With k = 2κ/Ts and q = 2ζk, substituting s = (2/Ts)(z−1)/(z+1) and
     // multiplying by (z+1)² gives G(z) = N(z)/D(z) with
-    // N = (c² + q, −2c², c² − q), D = (c² + q + 1, 2 − 2c², c² − q + 1).
-    const double c = period / (std::numbers::pi * ctx.sample_time);
-    const double c2 = c * c, q = 2.0 * zeta * c;
-    const double a0 = c2 + q + 1.0;
-    const double n0 = (c2 + q) / a0, n1 = -2.0 * c2 / a0, n2 = (c2 - q) / a0;
-    const double a1 = (2.0 - 2.0 * c2) / a0, a2 = (c2 - q + 1.0) / a0;
-    if (!std::isfinite(a1) || !std::isfinite(a2) || !std::isfinite(n0)) return false;
-    double* s = signal.data();
-    double w1 = 0.0, w2 = 0.0, e1 = 0.0, e2 = 0.0;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      const double w = s[k];
-      const double e = ((n0 * w + n1 * w1) + (n2 * w2 - a2 * e2)) - a1 * e1;
+    // N = (k² + q, −2k², k² − q), D = (k² + q + 1, 2 − 2k², k² − q + 1).
+    const double k = period / (std::numbers::pi * Ts);
+    const double k2 = k * k, q = 2.0 * zeta * k;
+    const double a0 = k2 + q + 1.0;
+    c = {(k2 + q) / a0, -2.0 * k2 / a0, (k2 - q) / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
+    if (!std::isfinite(c[3]) || !std::isfinite(c[4]) || !std::isfinite(c[0])) return EffectSetup::Invalid;
+    return EffectSetup::Run;
+  }
+
+  // y = w - G·w in place; returns the last G·w.
+  template <class V>
+  static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
+    const V n0 = c[0], n1 = c[1], n2 = c[2], a1 = c[3], a2 = c[4];
+    V w1{}, w2{}, e1{}, e2{};
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const V w = s[k];
+      const V e = ((n0 * w + n1 * w1) + (n2 * w2 - a2 * e2)) - a1 * e1;
       s[k] = w - e;
       w2 = w1;
       w1 = w;
       e2 = e1;
       e1 = e;
     }
-    return std::isfinite(e1);
+    return e1;
   }
 };
 

@@ -1,0 +1,106 @@
+// Batched effect chain: a model whose effects all have a batched form
+// evaluates candidates in blocks, and every value equals the one-candidate
+// path bit for bit - neutral, invalid and diverging candidates included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "framework/core/rng.hpp"
+#include "framework/model/model.hpp"
+#include "framework/model/model_problem.hpp"
+
+namespace hystbench {
+namespace {
+
+// A drive with steps, a sweep and a hold-out, normalised with unit scales;
+// y is a model output plus noise so that SSEs are of realistic size.
+ModelData record() {
+  const int n = 3000;
+  Eigen::VectorXd u(n);
+  for (int k = 0; k < n; ++k) {
+    const double t = 2e-3 * k;
+    u[k] = (k / 500 % 2 ? 1.0 : -0.4) + 0.5 * std::sin(2 * std::numbers::pi * (1 + 3 * t) * t);
+  }
+  ModelData d;
+  d.u = u;
+  d.t = Eigen::VectorXd::LinSpaced(n, 0.0, 2e-3 * (n - 1));
+  d.sample_time = 2e-3;
+  Rng rng(5);
+  d.y = u;
+  for (int k = 0; k < n; ++k) d.y[k] = 0.8 * u[k] + 0.01 * rng.normal();
+  d.estimation = Eigen::VectorXd::Ones(n);
+  d.estimation.tail(700).setZero();
+  return d;
+}
+
+// Candidates across the box; some at the neutral value (pass-through), at
+// the box edges, and outside the valid region (unstable ARX poles).
+Eigen::MatrixXd candidates(const Model& model, Eigen::Index n, std::uint64_t seed) {
+  const Bounds b = model.bounds();
+  Rng rng(seed);
+  Eigen::MatrixXd X(model.dimension(), n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    for (int i = 0; i < model.dimension(); ++i) X(i, j) = rng.uniform(b.lower[i], b.upper[i]);
+    if (j % 5 == 1) X.col(j) = model.neutral();
+    if (j % 7 == 2) X(1, j) = model.neutral()[1];  // first effect's first parameter only
+    if (j % 6 == 3) X.col(j) = b.upper;
+  }
+  return X;
+}
+
+void expect_bit_identical(const std::string& effects) {
+  const Model model = Model::parse(effects);
+  const ModelData data = record();
+  const ModelProblem problem(model, data);
+  ASSERT_TRUE(problem.batched()) << effects;
+  // 19 candidates: two full blocks and a partial one (at 8 lanes).
+  const Eigen::MatrixXd X = candidates(model, 19, 7);
+  Eigen::VectorXd f(X.cols());
+  problem.evaluate(X, f);
+  int finite = 0, infinite = 0;
+  for (Eigen::Index j = 0; j < X.cols(); ++j) {
+    EXPECT_EQ(f[j], problem.sse(X.col(j))) << effects << ", candidate " << j;
+    (std::isfinite(f[j]) ? finite : infinite)++;
+  }
+  EXPECT_GT(finite, 0) << effects;
+}
+
+TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
+  for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "hysteresis,asymmetry,msd,arx"})
+    expect_bit_identical(effects);
+}
+
+TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
+  const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
+  const ModelData data = record();
+  const ModelProblem problem(model, data);
+  Eigen::MatrixXd X = model.neutral().replicate(1, 8);
+  const auto names = model.parameter_names();
+  const auto index = [&](const std::string& name) {
+    return int(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  X(index("arx.a1"), 2) = 1.9;       // outside the Jury triangle: invalid
+  X(index("hysteresis.A"), 5) = 10;  // a violent loop
+  X(index("hysteresis.beta"), 5) = -1e3;
+  Eigen::VectorXd f(8);
+  problem.evaluate(X, f);
+  EXPECT_EQ(f[2], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(f[5], problem.sse(X.col(5)));
+  for (int j : {0, 1, 3, 4, 6, 7}) EXPECT_EQ(f[j], problem.sse(X.col(j)));
+  EXPECT_TRUE(std::isfinite(f[0]));
+}
+
+TEST(EffectLanes, AModelWithAnEffectWithoutABatchedFormEvaluatesOneCandidateAtATime) {
+  const Model model = Model::parse("hysteresis,msd,creep");
+  const ModelData data = record();
+  const ModelProblem problem(model, data);
+  EXPECT_FALSE(problem.batched());
+  const Eigen::MatrixXd X = candidates(model, 5, 3);
+  Eigen::VectorXd f(5);
+  problem.evaluate(X, f);
+  for (Eigen::Index j = 0; j < 5; ++j) EXPECT_EQ(f[j], problem.sse(X.col(j)));
+}
+
+}  // namespace
+}  // namespace hystbench
