@@ -67,7 +67,8 @@ void expect_bit_identical(const std::string& effects) {
 }
 
 TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
-  for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "hysteresis,asymmetry,msd,arx"})
+  for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "creep", "offset", "drift",
+                              "hysteresis,asymmetry,msd,arx", "hysteresis,asymmetry,msd,arx,creep,offset,drift"})
     expect_bit_identical(effects);
 }
 
@@ -92,7 +93,7 @@ TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
 }
 
 TEST(EffectLanes, AModelWithAnEffectWithoutABatchedFormEvaluatesOneCandidateAtATime) {
-  const Model model = Model::parse("hysteresis,msd,creep");
+  const Model model = Model::parse("hysteresis,msd,backlash");
   const ModelData data = record();
   const ModelProblem problem(model, data);
   EXPECT_FALSE(problem.batched());

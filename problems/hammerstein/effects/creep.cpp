@@ -45,27 +45,53 @@ class Creep : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double gamma = p[0];
-    if (!std::isfinite(gamma)) return false;
-    if (gamma == 0.0) return true;
-    if (!(ctx.sample_time > 0.0) || !std::isfinite(ctx.sample_time)) return false;
+    std::array<double, 1> c;
+    const EffectSetup s = setup(p, ctx.sample_time, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
+    return std::isfinite(run(c, ctx.sample_time, ctx.stage_input->data(), signal.data(), signal.size()));
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
+    const auto lane_setup = [&](std::span<const double> q, std::array<double, 1>& c) {
+      return setup(q, ctx.sample_time, c);
+    };
+    run_lanes<1>(p, signal, ok, lane_setup, [&](const std::array<LaneVector, 1>& c) {
+      return run(c, ctx.sample_time, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  // c = (gamma).
+  static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 1>& c) {
+    c = {p[0]};
+    if (!std::isfinite(c[0])) return EffectSetup::Invalid;
+    if (c[0] == 0.0) return EffectSetup::PassThrough;
+    if (!(Ts > 0.0) || !std::isfinite(Ts)) return EffectSetup::Invalid;
+    return EffectSetup::Run;
+  }
+
+  // Returns the sum of the lag states at the end.
+  template <class V>
+  static V run(const std::array<V, 1>& c, double Ts, const V* y0, V* s, Eigen::Index n) {
     std::array<double, 4> a{}, b{};
     for (std::size_t i = 0; i < a.size(); ++i) {
-      a[i] = std::exp(-ctx.sample_time / kTimeConstants[i]);
-      b[i] = -std::expm1(-ctx.sample_time / kTimeConstants[i]);  // 1 − a, accurately
+      a[i] = std::exp(-Ts / kTimeConstants[i]);
+      b[i] = -std::expm1(-Ts / kTimeConstants[i]);  // 1 − a, accurately
     }
-    const double* y0 = ctx.stage_input->data();
-    double* s = signal.data();
-    double x0 = 0.0, x1 = 0.0, x2 = 0.0, x3 = 0.0;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
+    const V gamma = c[0];
+    V x0{}, x1{}, x2{}, x3{};
+    for (Eigen::Index k = 0; k < n; ++k) {
       x0 = a[0] * x0 + b[0] * y0[k];
       x1 = a[1] * x1 + b[1] * y0[k];
       x2 = a[2] * x2 + b[2] * y0[k];
       x3 = a[3] * x3 + b[3] * y0[k];
       s[k] += gamma * ((x0 + x1) + (x2 + x3));
     }
-    return std::isfinite(x0 + x1 + x2 + x3);
+    return x0 + x1 + x2 + x3;
   }
 };
 

@@ -4,6 +4,7 @@
 //
 // t in seconds from the first sample (SignalContext::time). Neutral c1 = 0.
 // Units: y/s.
+#include <array>
 #include <cmath>
 
 #include "framework/model/effect.hpp"
@@ -26,12 +27,35 @@ class Drift : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double c1 = p[0];
-    if (!std::isfinite(c1)) return false;
-    if (c1 == 0.0) return true;
+    std::array<double, 1> c;
+    const EffectSetup s = setup(p, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.time || ctx.time->size() != signal.size()) return false;
-    signal += c1 * *ctx.time;
+    run(c, ctx.time->data(), signal.data(), signal.size());
     return true;
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    if (!ctx.time || std::size_t(ctx.time->size()) != signal.size()) return ok.fill(false);
+    run_lanes<1>(p, signal, ok, setup, [&](const std::array<LaneVector, 1>& c) {
+      return run(c, ctx.time->data(), signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  static EffectSetup setup(std::span<const double> p, std::array<double, 1>& c) {
+    c = {p[0]};
+    if (!std::isfinite(c[0])) return EffectSetup::Invalid;
+    return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
+  }
+
+  // signal += c1 * t; returns c1.
+  template <class V>
+  static V run(const std::array<V, 1>& c, const double* t, V* s, Eigen::Index n) {
+    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0] * t[k];
+    return c[0];
   }
 };
 

@@ -1,4 +1,6 @@
 // Constant sensor offset: y + c0.
+#include <array>
+
 #include "framework/model/effect.hpp"
 
 namespace hystbench {
@@ -18,8 +20,28 @@ class Offset : public Effect {
   }
   bool apply(std::span<const double> p, const SignalContext&,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    signal.array() += p[0];
+    run(std::array<double, 1>{p[0]}, signal.data(), signal.size());
     return true;
+  }
+
+  bool has_lanes() const override { return true; }
+  void apply_lanes(const LaneParams& p, const LaneContext&, std::span<LaneVector> signal,
+                   LaneMask& ok) const override {
+    const auto setup = [](std::span<const double> q, std::array<double, 1>& c) {
+      c = {q[0]};
+      return EffectSetup::Run;
+    };
+    run_lanes<1>(p, signal, ok, setup, [&](const std::array<LaneVector, 1>& c) {
+      return run(c, signal.data(), Eigen::Index(signal.size()));
+    });
+  }
+
+ private:
+  // A non-finite offset is caught by the model's final check, as in apply().
+  template <class V>
+  static V run(const std::array<V, 1>& c, V* s, Eigen::Index n) {
+    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0];
+    return V{};
   }
 };
 
