@@ -120,15 +120,19 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
 Experiment Experiment::load(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open the experiment file; check the path");
+  Experiment e = parse(in, file.string());
+  e.base_dir = file.parent_path();
+  return e;
+}
+
+Experiment Experiment::parse(std::istream& in, const std::string& where) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& err) {
-    throw InputError(file.string() + ": not valid JSON: " + err.what());
+    throw InputError(where + ": not valid JSON: " + err.what());
   }
-  Experiment e = from_json(j, file.string());
-  e.base_dir = file.parent_path();
-  return e;
+  return from_json(j, where);
 }
 
 nlohmann::json Experiment::to_json() const {
