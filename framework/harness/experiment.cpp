@@ -29,6 +29,16 @@ const nlohmann::json& required(const nlohmann::json& j, const std::string& key) 
   return j.at(key);
 }
 
+// j[key] as text, or `fallback` when the key is absent; `shown_as` names the
+// key in the message when the value is not text.
+std::string text_or(const nlohmann::json& j, const std::string& key, const std::string& fallback,
+                    const std::string& shown_as) {
+  if (!j.contains(key)) return fallback;
+  const auto& v = j.at(key);
+  if (!v.is_string()) throw InputError(shown_as + " = " + v.dump() + ": expected text (a JSON string)");
+  return v.get<std::string>();
+}
+
 long positive_integer(const nlohmann::json& v, const std::string& key) {
   if (!v.is_number_integer() || v.get<long>() <= 0)
     throw InputError(key + " = " + v.dump() + ": must be a positive integer");
@@ -38,7 +48,7 @@ long positive_integer(const nlohmann::json& v, const std::string& key) {
 PolishSpec read_polish(const nlohmann::json& j, const std::string& where) {
   require_known_keys(j, {"algorithm", "fraction"}, where);
   PolishSpec p;
-  p.algorithm = j.value("algorithm", p.algorithm);
+  p.algorithm = text_or(j, "algorithm", p.algorithm, where + ".algorithm");
   const auto& local = nlopt_local_algorithms();
   if (std::find(local.begin(), local.end(), p.algorithm) == local.end())
     throw InputError(where + ".algorithm = \"" + p.algorithm + "\": use a local NLopt method: " + join(local));
@@ -56,7 +66,7 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
     throw InputError(where + ".name: missing; give the optimizer's name (see `hystbench list`)");
   AlgorithmSpec spec;
   spec.name = a["name"].get<std::string>();
-  spec.label = a.value("label", spec.name);
+  spec.label = text_or(a, "label", spec.name, where + ".label");
   const auto& info = OptimizerRegistry::instance().find(spec.name, where + ".name");
   const auto given = a.value("params", nlohmann::json::object());
   const std::string params_key = where + " (" + spec.label + ").params";
@@ -90,7 +100,7 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
     if (!name.is_string() || name.get<std::string>().empty())
       throw InputError("name: expected a non-empty string");
     e.name = name.get<std::string>();
-    e.description = j.value("description", "");
+    e.description = text_or(j, "description", "", "description");
     e.problem = required(j, "problem");
     check_problem(e.problem);
     e.budget = Budget::from_json(required(j, "budget"), "budget");
@@ -129,7 +139,7 @@ Experiment Experiment::parse(std::istream& in, const std::string& where) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& err) {
+  } catch (const nlohmann::json::exception& err) {  // syntax, or a number beyond a double
     throw InputError(where + ": not valid JSON: " + err.what());
   }
   return from_json(j, where);
