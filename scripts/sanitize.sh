@@ -22,7 +22,9 @@ suppressions=$PWD/tests/sanitizers
 export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1
 export LSAN_OPTIONS=suppressions=$suppressions/lsan.supp
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-export TSAN_OPTIONS=suppressions=$suppressions/tsan.supp:second_deadlock_stack=1
+# history_size=7 (the most): older accesses keep their stacks, without which
+# the libgomp entry of tsan.supp cannot recognise an OpenMP worker's access.
+export TSAN_OPTIONS=suppressions=$suppressions/tsan.supp:second_deadlock_stack=1:history_size=7
 
 cmake --preset "$preset" >/dev/null
 env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL cmake --build --preset "$preset" -j "$jobs"
