@@ -1,5 +1,5 @@
 // libFuzzer target for the measurement CSV reader (framework/io/measurement.*)
-// and the CSV cell writers (framework/io/csv_format.*). Bad input must end in
+// and csv_number (framework/io/csv_format.*). Bad input must end in
 // an InputError; any other exception, a crash or a sanitizer report is a
 // finding. The u and y that were read are written back with csv_number and
 // read again: they must come back unchanged. (Times are written back as
