@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -93,6 +94,11 @@ TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
   EXPECT_TRUE(j.contains("where"));
   EXPECT_TRUE(fs::exists(dir_ / "d" / "extended_fit.json"));
   EXPECT_NE(d.output.find("verdict: offset"), std::string::npos);
+  // The report names the worst branch (its loop once read a destroyed
+  // temporary, which AddressSanitizer caught).
+  std::ifstream report(dir_ / "d" / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("- worst branch: "), std::string::npos) << text;
 
   const auto l = run("discover --data " + path("data.csv") + " --start msd --out " + path("l") +
                      " --candidates offset,drift,delay" + kQuick);

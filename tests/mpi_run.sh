@@ -16,6 +16,12 @@ export OMP_NUM_THREADS=1
 # Containers often forbid the cross-memory copy Open MPI uses for large
 # messages between ranks of one machine; plain copies work everywhere.
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
+# Under AddressSanitizer (scripts/sanitize.sh asan): Open MPI is built without
+# frame pointers, so the leak checker needs the slow unwinder to see that what
+# Open MPI leaves allocated at exit is its own (tests/sanitizers/lsan.supp).
+if [[ -n "${ASAN_OPTIONS:-}" ]]; then
+  export ASAN_OPTIONS="$ASAN_OPTIONS:fast_unwind_on_malloc=0"
+fi
 mpirun_3() { timeout 120 mpirun --oversubscribe --bind-to none -np 3 "$@"; }
 
 cat > "$work/experiment.json" <<JSON

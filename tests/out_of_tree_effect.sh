@@ -8,6 +8,9 @@
 set -euo pipefail
 build_dir=$1
 source_dir=$2
+# The core's compiler flags (a sanitizer build's -fsanitize=...), so that the
+# plugin is built, linked and checked like the core; empty in a plain build.
+core_flags=${3:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -15,7 +18,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 cmake -S "$source_dir/examples/thermal_drift_effect" -B "$work/plugin" \
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
 cmake --build "$work/plugin" >/dev/null
 
 hystbench="$work/prefix/bin/hystbench"

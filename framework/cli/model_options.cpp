@@ -32,7 +32,7 @@ FitOptions FitCliOptions::fit_options() const {
   FitOptions f = fit;
   try {
     f.optimizer_params = nlohmann::json::parse(optimizer_params);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
     throw InputError("--optimizer-params: not valid JSON: " + std::string(e.what()));
   }
   f.validate();

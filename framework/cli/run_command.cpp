@@ -159,7 +159,10 @@ RunInputs read_inputs(const RunOptions& o) {
   check_reference(in.experiment, o.reference);
   in.problem = build_problem(in.experiment, o.experiment);
   in.dir = o.out.empty() ? "out/" + in.experiment.name : o.out;
-  check_output_folder(in.dir, o);
+  // Rank 0 alone writes the folder. Another rank checking it could find the
+  // trials.jsonl rank 0 has just started (a slow start under mpirun, seen with
+  // AddressSanitizer), and on a cluster need not see that file system at all.
+  if (cluster::is_coordinator()) check_output_folder(in.dir, o);
   return in;
 }
 

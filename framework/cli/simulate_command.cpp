@@ -24,7 +24,7 @@ nlohmann::json read_json_file(const std::string& path) {
   if (!in) throw InputError(path + ": cannot open this file");
   try {
     return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
     throw InputError(path + ": not valid JSON: " + e.what());
   }
 }

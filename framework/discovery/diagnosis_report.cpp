@@ -52,7 +52,10 @@ std::string worst_groups(const nlohmann::json& where, const std::string& unit) {
   const std::string amplitude = worst_of(bins, "label", unit);
   if (!amplitude.empty()) out += "- worst input-amplitude bin: " + amplitude + "\n";
   nlohmann::json branches = nlohmann::json::array();
-  for (const auto& [name, m] : where.value("by_branch", nlohmann::json::object()).items()) {
+  // Named, not a temporary in the loop header: items() refers to the object,
+  // and a temporary there would be destroyed before the loop runs.
+  const nlohmann::json by_branch = where.value("by_branch", nlohmann::json::object());
+  for (const auto& [name, m] : by_branch.items()) {
     auto labelled = m;
     labelled["label"] = name;
     branches.push_back(labelled);

@@ -59,7 +59,7 @@ FitRecord FitRecord::read(const std::filesystem::path& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
     throw InputError(where + ": not valid JSON: " + e.what());
   }
   if (j.value("format", "") != "hystbench-fit/1")

@@ -29,6 +29,16 @@ const nlohmann::json& required(const nlohmann::json& j, const std::string& key) 
   return j.at(key);
 }
 
+// j[key] as text, or `fallback` when the key is absent; `shown_as` names the
+// key in the message when the value is not text.
+std::string text_or(const nlohmann::json& j, const std::string& key, const std::string& fallback,
+                    const std::string& shown_as) {
+  if (!j.contains(key)) return fallback;
+  const auto& v = j.at(key);
+  if (!v.is_string()) throw InputError(shown_as + " = " + v.dump() + ": expected text (a JSON string)");
+  return v.get<std::string>();
+}
+
 long positive_integer(const nlohmann::json& v, const std::string& key) {
   if (!v.is_number_integer() || v.get<long>() <= 0)
     throw InputError(key + " = " + v.dump() + ": must be a positive integer");
@@ -38,7 +48,7 @@ long positive_integer(const nlohmann::json& v, const std::string& key) {
 PolishSpec read_polish(const nlohmann::json& j, const std::string& where) {
   require_known_keys(j, {"algorithm", "fraction", "repeat"}, where);
   PolishSpec p;
-  p.algorithm = j.value("algorithm", p.algorithm);
+  p.algorithm = text_or(j, "algorithm", p.algorithm, where + ".algorithm");
   std::vector<std::string> local = nlopt_local_algorithms();
   local.push_back(PolishSpec::kLevenbergMarquardt);
   if (std::find(local.begin(), local.end(), p.algorithm) == local.end())
@@ -61,7 +71,7 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
     throw InputError(where + ".name: missing; give the optimizer's name (see `hystbench list`)");
   AlgorithmSpec spec;
   spec.name = a["name"].get<std::string>();
-  spec.label = a.value("label", spec.name);
+  spec.label = text_or(a, "label", spec.name, where + ".label");
   const auto& info = OptimizerRegistry::instance().find(spec.name, where + ".name");
   const auto given = a.value("params", nlohmann::json::object());
   const std::string params_key = where + " (" + spec.label + ").params";
@@ -95,7 +105,7 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
     if (!name.is_string() || name.get<std::string>().empty())
       throw InputError("name: expected a non-empty string");
     e.name = name.get<std::string>();
-    e.description = j.value("description", "");
+    e.description = text_or(j, "description", "", "description");
     e.problem = required(j, "problem");
     check_problem(e.problem);
     e.budget = Budget::from_json(required(j, "budget"), "budget");
@@ -125,15 +135,19 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
 Experiment Experiment::load(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open the experiment file; check the path");
+  Experiment e = parse(in, file.string());
+  e.base_dir = file.parent_path();
+  return e;
+}
+
+Experiment Experiment::parse(std::istream& in, const std::string& where) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& err) {
-    throw InputError(file.string() + ": not valid JSON: " + err.what());
+  } catch (const nlohmann::json::exception& err) {  // syntax, or a number beyond a double
+    throw InputError(where + ": not valid JSON: " + err.what());
   }
-  Experiment e = from_json(j, file.string());
-  e.base_dir = file.parent_path();
-  return e;
+  return from_json(j, where);
 }
 
 nlohmann::json Experiment::to_json() const {

@@ -9,6 +9,7 @@
 //    "algorithms": [{"name": "de", "label": "DE", "params": {"np": 50}}]}
 #include <cstdint>
 #include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -51,6 +52,9 @@ struct Experiment {
 
   // Throws InputError whose message starts with the file name.
   static Experiment load(const std::filesystem::path& file);
+  // The same from the file's text; `where` stands for the file name in
+  // messages. base_dir stays empty.
+  static Experiment parse(std::istream& in, const std::string& where);
   // `where` prefixes messages (the file name, or "experiment").
   static Experiment from_json(const nlohmann::json& j, const std::string& where);
   nlohmann::json to_json() const;

@@ -425,8 +425,11 @@ nlohmann::json ColumnMap::to_json() const {
 }
 
 Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns) {
-  const std::string file = path.string();
-  const std::string text = read_text(path);
+  return parse_measurement(read_text(path), path.string(), columns);
+}
+
+Measurement parse_measurement(std::string_view text, const std::string& file,
+                              const ColumnMap& columns) {
   LineReader reader(text);
   std::vector<std::string> fields;
   const Header header = read_header(reader, fields, columns, file);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hystbench {
@@ -40,6 +41,11 @@ struct ColumnMap {
 // evenly sampled, fewer than two samples. Accepts a UTF-8 BOM, CRLF line
 // ends, quoted fields, extra columns and '#' comment lines.
 Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns = {});
+
+// The same reading, from the text of a file; `source` stands for the file
+// name in messages and in Measurement::source.
+Measurement parse_measurement(std::string_view text, const std::string& source,
+                              const ColumnMap& columns = {});
 
 // Writes t,u,y[,segment] with 17 significant digits; `comments` become '#'
 // lines at the top.
