@@ -62,6 +62,14 @@ struct LaneContext {
 // How an effect's parameters set it up, for one candidate.
 enum class EffectSetup { Run, PassThrough, Invalid };
 
+// Setup of effects with one coefficient that switches them off at 0
+// (asymmetry's d2, drift's rate, creep's gamma): non-finite is invalid.
+inline EffectSetup gain_like_setup(std::span<const double> p, std::array<double, 1>& c) {
+  c = {p[0]};
+  if (!std::isfinite(c[0])) return EffectSetup::Invalid;
+  return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
+}
+
 // The batched form of an effect from its two scalar pieces: `setup(p, c)`
 // turns one candidate's parameters into K coefficients (and says whether the
 // effect runs, passes the signal through, or is invalid); `kernel(c)` runs

@@ -33,7 +33,7 @@ class Asymmetry : public Effect {
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
     std::array<double, 1> c;
-    const EffectSetup s = setup(p, c);
+    const EffectSetup s = gain_like_setup(p, c);
     if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
     return std::isfinite(run(c, ctx.stage_input->data(), signal.data(), signal.size()));
@@ -43,18 +43,12 @@ class Asymmetry : public Effect {
   void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
                    LaneMask& ok) const override {
     if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
-    run_lanes<1>(p, signal, ok, setup, [&](const std::array<LaneVector, 1>& c) {
+    run_lanes<1>(p, signal, ok, gain_like_setup, [&](const std::array<LaneVector, 1>& c) {
       return run(c, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
     });
   }
 
  private:
-  static EffectSetup setup(std::span<const double> p, std::array<double, 1>& c) {
-    c = {p[0]};
-    if (!std::isfinite(c[0])) return EffectSetup::Invalid;
-    return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
-  }
-
   // signal += d2 * v^2; returns d2 (finite: nothing here can diverge).
   template <class V>
   static V run(const std::array<V, 1>& c, const V* v, V* s, Eigen::Index n) {

@@ -67,11 +67,9 @@ class Creep : public Effect {
  private:
   // c = (gamma).
   static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 1>& c) {
-    c = {p[0]};
-    if (!std::isfinite(c[0])) return EffectSetup::Invalid;
-    if (c[0] == 0.0) return EffectSetup::PassThrough;
-    if (!(Ts > 0.0) || !std::isfinite(Ts)) return EffectSetup::Invalid;
-    return EffectSetup::Run;
+    const EffectSetup s = gain_like_setup(p, c);
+    if (s != EffectSetup::Run) return s;
+    return Ts > 0.0 && std::isfinite(Ts) ? EffectSetup::Run : EffectSetup::Invalid;
   }
 
   // Returns the sum of the lag states at the end.
