@@ -32,7 +32,6 @@ class Residuals {
 
   int inputs() const { return int(lower_.size()); }
   int values() const { return int(problem_.residual_count()); }
-  long used() const { return used_; }
   bool out_of_budget() { return used_ >= allowed_ || ctx_.stopped(); }
 
   Eigen::VectorXd normalise(const Eigen::VectorXd& x) const { return (x - lower_).cwiseQuotient(range_); }
