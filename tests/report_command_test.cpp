@@ -102,7 +102,7 @@ TEST_F(ReportCommand, RecomputesOneFolderInPlace) {
 TEST_F(ReportCommand, StatisticsTableHasMarksErtAndSnapshots) {
   const std::string md = read(*dir_ / "all" / "stats.md");
   for (const char* part : {"| Algorithm | Mark | p_Holm | Success | ERT | f@10 % | f@50 % | f@100 % |",
-                           "ref.", "+/=/-: ", "alpha = 0.05", "Holm-corrected", "6 trials per algorithm",
+                           "ref.", "+/=/-: ", "α = 0.05", "Holm-corrected", "6 trials per algorithm",
                            "budget 400 evaluations", "target fitness 0.01000 (budget target)"})
     EXPECT_TRUE(contains(md, part)) << part << " missing from:\n" << md;
   const std::string tex = read(*dir_ / "all" / "stats.tex");

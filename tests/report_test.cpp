@@ -78,6 +78,19 @@ TEST(TableMarkdown, FormatsNumbersAndBoldsTheLowestPerColumn) {
   EXPECT_TRUE(contains(md, "| broken | — | — | — | — | — | — | — | — | 10/10 |")) << md;
 }
 
+TEST(TableMarkdown, ValuesThatPrintAsTheLowestAreAllBold) {
+  // 12031.2 and 12034.9 both print as 1.203e+04: a reader cannot tell them
+  // apart, so both are bold; 12051 prints as 1.205e+04 and is not.
+  const std::string md = table_markdown({row("a", {12034.9, 1, 1, 0, 1}, 1, 1, 0, 1),
+                                         row("b", {12031.2, 2, 2, 0, 2}, 1, 1, 0, 1),
+                                         row("c", {12051.0, 3, 3, 0, 3}, 1, 1, 0, 1)},
+                                        sample_context());
+  EXPECT_TRUE(contains(md, "| a | **1.203e+04** |")) << md;
+  EXPECT_TRUE(contains(md, "| b | **1.203e+04** |")) << md;
+  EXPECT_TRUE(contains(md, "| c | 1.205e+04 |")) << md;
+  EXPECT_TRUE(contains(md, "lowest printed value per column in bold, ties included")) << md;
+}
+
 TEST(TableMarkdown, CaptionDescribesTheRun) {
   ReportContext ctx = sample_context();
   const std::string md = table_markdown(sample_rows(), ctx);

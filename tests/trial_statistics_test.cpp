@@ -117,7 +117,8 @@ TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
   ctx.experiment = "exp_1";
   const std::string tex = stats_latex(s, ctx);
   for (const char* part : {"\\toprule", "\\midrule", "\\bottomrule", "A\\_1 & ref.", "\\textbf{",
-                           "\\multicolumn{7}{l}{1/1/0}", "\\label{tab:exp_1-stats}"})
+                           "\\multicolumn{7}{l}{1/1/0}", "\\label{tab:exp_1-stats}",
+                           "at $\\alpha = 0.05$", "(1.01 $\\times$ noise floor)"})
     EXPECT_NE(tex.find(part), std::string::npos) << part << " missing from:\n" << tex;
   EXPECT_EQ(tex.find("A_1"), std::string::npos) << "unescaped underscore";
   EXPECT_EQ(tex.find("|"), std::string::npos) << "booktabs tables have no vertical rules";

@@ -85,7 +85,7 @@ std::string statistics_sentence(const FriedmanRanking& r, Format f) {
                   std::to_string(k - 1) + ", " + std::to_string((k - 1) * (n - 1)) +
                   "), p = " + p_value(t.f_p, f) + ").";
   if (r.critical_difference)
-    s += " Nemenyi critical difference at alpha = 0.05: CD = " +
+    s += " Nemenyi critical difference at " + significance_level(0.05, f) + ": CD = " +
          format_fitness(*r.critical_difference, f) +
          "; two average ranks further apart differ significantly.";
   else
@@ -98,7 +98,8 @@ std::string control_sentence(const FriedmanRanking& r, Format f) {
   return " Mark: each algorithm's average rank against the control " + escape(r.labels[r.control], f) +
          (r.control_chosen ? " (chosen by the user)" : " (the best average rank)") +
          ", z-test with Holm's correction over " + std::to_string(r.labels.size() - 1) +
-         " comparisons at alpha = 0.05: + the control ranks significantly better, " + minus +
+         " comparisons at " + significance_level(0.05, f) +
+         ": + the control ranks significantly better, " + minus +
          " significantly worse, = no significant difference. Best average rank in bold.";
 }
 

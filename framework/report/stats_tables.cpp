@@ -51,8 +51,12 @@ double best_of(const std::vector<AlgorithmStatistics>& rows,
   return all_tie && rows.size() > 1 ? none : best;
 }
 
-std::string maybe_bold(const std::string& text, double v, double best, Format f) {
-  return !std::isnan(v) && v == best ? bold(text, f) : text;
+// The best of a column as printed; empty where the column has no best.
+std::string best_text(const std::vector<AlgorithmStatistics>& rows,
+                      const std::function<double(const AlgorithmStatistics&)>& value, bool highest,
+                      const std::function<std::string(double)>& print) {
+  const double best = best_of(rows, value, highest);
+  return std::isnan(best) ? "" : print(best);
 }
 
 std::vector<std::string> row_cells(const AlgorithmStatistics& r, const CampaignStatistics& s,
@@ -62,15 +66,20 @@ std::vector<std::string> row_cells(const AlgorithmStatistics& r, const CampaignS
   std::vector<std::string> cells{escape(r.label, f), mark_cell(r, f),
                                  std::isnan(r.p_holm) ? non_finite(r.p_holm, f)
                                                       : format_fitness(r.p_holm, f)};
-  const std::string rate = std::isnan(r.success_rate)
-                               ? non_finite(r.success_rate, f)
-                               : std::to_string(r.successes) + "/" + std::to_string(r.trials);
-  cells.push_back(maybe_bold(rate, r.success_rate, best_of(s.rows, success, true), f));
-  cells.push_back(maybe_bold(format_count(r.ert, f), r.ert, best_of(s.rows, ert, false), f));
+  const auto count = [f](double x) { return format_count(x, f); };
+  const auto fitness = [f](double x) { return format_fitness(x, f); };
+  // Every algorithm has the same number of trials, so a rate prints as its
+  // success count does.
+  const auto rate = [&r, f](double x) {
+    return std::isnan(x) ? non_finite(x, f)
+                         : std::to_string(std::lround(x * r.trials)) + "/" + std::to_string(r.trials);
+  };
+  cells.push_back(bold_if_best(rate(r.success_rate), best_text(s.rows, success, true, rate), f));
+  cells.push_back(bold_if_best(count(r.ert), best_text(s.rows, ert, false, count), f));
   for (std::size_t i = 0; i < r.snapshot_medians.size(); ++i) {
     const auto at = [i](const AlgorithmStatistics& x) { return x.snapshot_medians[i]; };
-    const double v = r.snapshot_medians[i];
-    cells.push_back(maybe_bold(format_fitness(v, f), v, best_of(s.rows, at, false), f));
+    cells.push_back(
+        bold_if_best(fitness(r.snapshot_medians[i]), best_text(s.rows, at, false, fitness), f));
   }
   return cells;
 }
@@ -102,7 +111,7 @@ std::string mark_sentence(const CampaignStatistics& s, Format f) {
   return " Mark: two-sided Wilcoxon rank-sum test of the final fitness of the reference " +
          escape(s.reference, f) +
          (s.reference_chosen ? " (chosen by the user)" : " (the lowest median final fitness)") +
-         " against each algorithm at alpha = 0.05, Holm-corrected over the " +
+         " against each algorithm at " + significance_level(s.alpha, f) + ", Holm-corrected over the " +
          std::to_string(s.rows.size() - 1) + (s.rows.size() == 2 ? " comparison" : " comparisons") +
          ": + the reference is significantly "
          "better, " + minus + " significantly worse, = no significant difference; " +
@@ -113,25 +122,27 @@ std::string runtime_sentence(const CampaignStatistics& s, Format f) {
   std::string text;
   if (s.target)
     text = " Success: trials that reached the target fitness " + format_fitness(*s.target, f) +
-           " (" + s.target_origin + "); ERT: expected running time to it in evaluations "
+           " (" + escape(s.target_origin, f) + "); ERT: expected running time to it in evaluations "
            "(the evaluations of all trials, each up to the target when it reached it, divided by "
            "the number of successes; infinite without one).";
   else
     text = " No target fitness is known (no budget target, no noise floor): no success rate "
            "or ERT.";
+  // Named as the column headers name it.
+  const std::string snapshot = f == Format::Markdown ? "f@q" : "$f_q$";
   std::string fractions;
   for (double q : kSnapshotFractions)
     fractions += (fractions.empty() ? "" : ", ") + percent(q, f);
   if (s.budget && s.budget_from_trials)
-    text += " f@q: median best-so-far fitness after " + fractions + " of " +
+    text += " " + snapshot + ": median best-so-far fitness after " + fractions + " of " +
             std::to_string(*s.budget) + " evaluations, the most any trial used (the budget " +
             "counts iterations or time).";
   else if (s.budget)
-    text += " f@q: median best-so-far fitness after " + fractions + " of the " +
+    text += " " + snapshot + ": median best-so-far fitness after " + fractions + " of the " +
             std::to_string(*s.budget) + "-evaluation budget.";
   else
     text += " No evaluation budget: no fixed-budget values.";
-  return text + " Best value per column in bold.";
+  return text + " Best printed value per column in bold, ties included.";
 }
 
 std::string caption(const CampaignStatistics& s, const ReportContext& ctx, Format f) {

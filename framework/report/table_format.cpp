@@ -58,6 +58,16 @@ std::string bold(const std::string& cell, Format f) {
   return std::string("\\textbf{") + (math ? "\\boldmath" : "") + cell + "}";
 }
 
+std::string bold_if_best(const std::string& cell, const std::string& best_text, Format f) {
+  return !best_text.empty() && cell == best_text ? bold(cell, f) : cell;
+}
+
+std::string significance_level(double alpha, Format f) {
+  char level[32];
+  std::snprintf(level, sizeof level, "%g", alpha);
+  return f == Format::Markdown ? std::string("α = ") + level : std::string("$\\alpha = ") + level + "$";
+}
+
 std::string escape_latex(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -72,6 +82,10 @@ std::string escape_latex(const std::string& s) {
       default: out += c;
     }
   }
+  // The one non-ASCII sign the tables write: math mode needs no input encoding.
+  const std::string times = "×";
+  for (auto at = out.find(times); at != std::string::npos; at = out.find(times, at))
+    out.replace(at, times.size(), "$\\times$");
   return out;
 }
 

@@ -52,16 +52,16 @@ std::vector<std::string> header_cells(Format f) {
 
 std::vector<std::vector<std::string>> body_cells(const std::vector<AlgorithmSummary>& rows,
                                                  Format f) {
-  std::array<double, kFitnessColumns.size()> minimum{};
-  for (std::size_t c = 0; c < kFitnessColumns.size(); ++c)
-    minimum[c] = column_minimum(rows, kFitnessColumns[c].field);
+  std::array<std::string, kFitnessColumns.size()> minimum;
+  for (std::size_t c = 0; c < kFitnessColumns.size(); ++c) {
+    const double m = column_minimum(rows, kFitnessColumns[c].field);
+    if (std::isfinite(m)) minimum[c] = format_fitness(m, f);
+  }
   std::vector<std::vector<std::string>> body;
   for (const auto& r : rows) {
     std::vector<std::string> cells{escape(r.label, f)};
     for (std::size_t c = 0; c < kFitnessColumns.size(); ++c) {
-      const double v = r.*kFitnessColumns[c].field;
-      const std::string text = format_fitness(v, f);
-      cells.push_back(v == minimum[c] ? bold(text, f) : text);
+      cells.push_back(bold_if_best(format_fitness(r.*kFitnessColumns[c].field, f), minimum[c], f));
     }
     cells.push_back(format_count(r.mean_iterations, f));
     cells.push_back(format_count(r.mean_evaluations, f));
@@ -85,7 +85,7 @@ std::string caption(const ReportContext& ctx, Format f) {
     text += " Noise floor (SSE of the true parameters): " +
             format_fitness(*ctx.noise_floor, f) + ".";
   }
-  return text + " Fitness statistics over the successful trials; lowest value per column in bold.";
+  return text + " Fitness statistics over the successful trials; lowest printed value per column in bold, ties included.";
 }
 
 // Why trials failed, under the table: a failure is a result to explain,

@@ -143,7 +143,7 @@ CampaignStatistics campaign_statistics(const Experiment& e,
   s.reference = e.algorithms[ref].label;
   s.reference_chosen = !reference.empty();
   s.target = runtime_target(e, noise_floor);
-  if (s.target) s.target_origin = e.budget.target ? "budget target" : "1.01 x noise floor";
+  if (s.target) s.target_origin = e.budget.target ? "budget target" : "1.01 × noise floor";
   s.budget = e.budget.evaluations;
   if (!s.budget) {
     s.budget = most_evaluations(results);

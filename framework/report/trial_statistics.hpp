@@ -32,7 +32,7 @@ struct CampaignStatistics {
   bool reference_chosen = false;   // false: picked as the best median
   double alpha = 0.05;
   std::optional<double> target;    // fitness target of the runtime measures
-  std::string target_origin;       // "budget target" or "1.01 x noise floor"
+  std::string target_origin;       // "budget target" or "1.01 × noise floor"
   // Evaluations the snapshot fractions refer to: the evaluation budget, or
   // without one (an iteration or time budget) the most evaluations any trial
   // used, so that the columns still compare the algorithms at equal cost.
