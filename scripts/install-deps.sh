@@ -8,10 +8,13 @@ packages=(cmake g++ make libeigen3-dev libnlopt-cxx-dev nlohmann-json3-dev
           libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
           libopenmpi-dev openmpi-bin)
 # `install-deps.sh fuzz` (run by scripts/fuzz.sh) adds clang and its libFuzzer
-# runtime; `make demo` and `make test` never need them.
-if [[ "${1:-}" == fuzz ]]; then
-  packages+=(clang libclang-rt-14-dev)
-fi
+# runtime; `install-deps.sh tsan` (scripts/sanitize.sh tsan) adds clang, its
+# sanitizer runtimes and LLVM's OpenMP runtime with the Archer tool.
+# `make demo` and `make test` never need them.
+case "${1:-}" in
+  fuzz) packages+=(clang libclang-rt-14-dev) ;;
+  tsan) packages+=(clang libclang-rt-14-dev libomp-14-dev) ;;
+esac
 # Only the peer comparison with pagmo2 (benchmarks/peer) needs these; the
 # build skips it where they are missing, so failing to get them stops nothing.
 optional=(libpagmo-dev)

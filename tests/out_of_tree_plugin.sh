@@ -5,15 +5,17 @@
 set -euo pipefail
 build_dir=$1
 source_dir=$2
-# The core's compiler flags (a sanitizer build's -fsanitize=...), so that the
-# plugin is built, linked and checked like the core; empty in a plain build.
+# The core's compiler flags (a sanitizer build's -fsanitize=...) and compiler
+# (clang for ThreadSanitizer), so that the plugin is built, linked and checked
+# like the core: two sanitizer runtimes cannot share a process.
 core_flags=${3:-}
+core_compiler=${4:-c++}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 cmake -S "$source_dir/examples/random_search_plugin" -B "$work/plugin" \
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_COMPILER="$core_compiler" \
       -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
 cmake --build "$work/plugin" >/dev/null
 
