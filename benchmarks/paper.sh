@@ -53,4 +53,25 @@ for excitation in multisine sweep steps; do
   done
 done
 "$exe" rank "$friedman"/{multisine,sweep,steps}_{1,3}pct --out "$friedman" --force
+
+# Every LaTeX table in one document: proof that they compile, and a page to
+# read them on. Typeset where pdflatex is installed (Debian:
+# texlive-latex-recommended); make paper needs no TeX otherwise.
+cd "$out"
+{
+  printf '%s\n' '% All tables of this folder; `pdflatex tables.tex` typesets them.' \
+    '\documentclass{article}' '\usepackage[margin=2cm]{geometry}' '\usepackage{booktabs}' \
+    '\begin{document}'
+  for table in {mede_table1,mede_table1_fair,amfmmde_convergence,league}/{table,stats}.tex friedman/ranks.tex; do
+    printf '\\input{%s}\n\\clearpage\n' "$table"
+  done
+  printf '%s\n' '\end{document}'
+} > tables.tex
+if command -v pdflatex >/dev/null; then
+  pdflatex -interaction=nonstopmode -halt-on-error tables.tex >/dev/null ||
+    { echo "paper.sh: the LaTeX tables do not compile; see $out/tables.log" >&2; exit 1; }
+  rm -f tables.aux tables.log
+else
+  echo "no pdflatex: tables.tex written but not typeset"
+fi
 echo "results in $out"
