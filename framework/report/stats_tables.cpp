@@ -111,7 +111,8 @@ std::string mark_sentence(const CampaignStatistics& s, Format f) {
   return " Mark: two-sided Wilcoxon rank-sum test of the final fitness of the reference " +
          escape(s.reference, f) +
          (s.reference_chosen ? " (chosen by the user)" : " (the lowest median final fitness)") +
-         " against each algorithm at " + significance_level(s.alpha, f) + ", Holm-corrected over the " +
+         " against each algorithm at " + significance_level(s.alpha, f) +
+         ", Holm-corrected over the " +
          std::to_string(s.rows.size() - 1) + (s.rows.size() == 2 ? " comparison" : " comparisons") +
          ": + the reference is significantly "
          "better, " + minus + " significantly worse, = no significant difference; " +

@@ -65,7 +65,8 @@ std::string bold_if_best(const std::string& cell, const std::string& best_text, 
 std::string significance_level(double alpha, Format f) {
   char level[32];
   std::snprintf(level, sizeof level, "%g", alpha);
-  return f == Format::Markdown ? std::string("α = ") + level : std::string("$\\alpha = ") + level + "$";
+  return f == Format::Markdown ? std::string("α = ") + level
+                                : std::string("$\\alpha = ") + level + "$";
 }
 
 std::string escape_latex(const std::string& s) {

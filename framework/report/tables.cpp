@@ -85,7 +85,8 @@ std::string caption(const ReportContext& ctx, Format f) {
     text += " Noise floor (SSE of the true parameters): " +
             format_fitness(*ctx.noise_floor, f) + ".";
   }
-  return text + " Fitness statistics over the successful trials; lowest printed value per column in bold, ties included.";
+  return text + " Fitness statistics over the successful trials; lowest printed value per column "
+                "in bold, ties included.";
 }
 
 // Why trials failed, under the table: a failure is a result to explain,
