@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
@@ -94,7 +95,16 @@ std::vector<double> finals(const std::vector<TrialResult>& trials) {
   return out;
 }
 
-std::string boxplot_settings(const Experiment& e, const ReportContext& ctx, bool log_y) {
+// The x axis holds about 80 characters: labels that need more room than an
+// algorithm's share of it would overlap, so they are turned.
+bool labels_crowd(const Experiment& e) {
+  std::size_t longest = 0;
+  for (const auto& a : e.algorithms) longest = std::max(longest, a.label.size());
+  return (longest + 1) * e.algorithms.size() > 80;
+}
+
+std::string boxplot_settings(const Experiment& e, const ReportContext& ctx, bool log_y,
+                             bool decades) {
   std::string tics;
   for (std::size_t k = 0; k < e.algorithms.size(); ++k)
     tics += (k ? ", " : "") + gnuplot::quoted(e.algorithms[k].label) + " " + std::to_string(k + 1);
@@ -104,11 +114,15 @@ std::string boxplot_settings(const Experiment& e, const ReportContext& ctx, bool
                   gnuplot::quoted("box: quartiles, whiskers: 1.5 IQR, over " +
                                   std::to_string(ctx.trials) + " trials") +
                   " noenhanced\nset ylabel \"Final best fitness (SSE)\"\n"
-                  "set xtics (" + tics + ") noenhanced\nset xrange [0.4:" +
+                  "set xtics (" + tics + ") noenhanced" +
+                  (labels_crowd(e) ? " rotate by 45 right" : "") + "\nset xrange [0.4:" +
                   std::to_string(e.algorithms.size()) + ".6]\n"
                   "set style fill solid 0.35 border\nset style boxplot outliers pointtype 7\n"
                   "set boxwidth 0.5\nset grid ytics lt 1 lc rgb \"#e0e0e0\" lw 1\nunset key\n";
   if (log_y) s += "set logscale y\n";
+  // Powers of ten read alike on every axis of the report; over less than a
+  // decade they would label every tic 10^4, so gnuplot's numbers stay.
+  if (log_y && decades) s += "set format y \"10^{%L}\"\n";
   return s;
 }
 
@@ -144,6 +158,7 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
                               const ReportContext& ctx) {
   std::string csv = "label,trial,final\n", dat, plot;
   bool positive = true;
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (std::size_t a = 0; a < results.size(); ++a) {
     const std::string& label = e.algorithms[a].label;
     for (const auto& r : results[a])
@@ -154,6 +169,8 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
     for (double v : values) {
       dat += gnuplot::number(v) + "\n";
       positive = positive && v > 0;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
     if (values.empty()) dat += "NaN\n";  // keeps the block, so index a stays algorithm a
     // gnuplot stops at an empty block, so algorithms without values are left out.
@@ -166,7 +183,7 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
   write_file_atomic(dir / "boxplot.dat", dat);
   std::string text = gnuplot::header("boxplot", "final best fitness of the trials, one box per algorithm",
                                      "boxplot.dat (one index block per algorithm: final)") +
-                     boxplot_settings(e, ctx, positive);
+                     boxplot_settings(e, ctx, positive, hi >= 10 * lo);
   if (plot.empty())
     text += "# No algorithm reached a finite fitness: nothing to draw.\n";
   else
