@@ -17,6 +17,7 @@ set boxwidth 0.5
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 unset key
 set logscale y
+set format y "10^{%L}"
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

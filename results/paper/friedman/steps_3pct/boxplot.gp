@@ -9,7 +9,7 @@
 set encoding utf8
 set title "Final fitness — friedman (hammerstein(steps_3pct.csv))"."\n"."box: quartiles, whiskers: 1.5 IQR, over 10 trials" noenhanced
 set ylabel "Final best fitness (SSE)"
-set xtics ("DE" 1, "GA" 2, "DETVSF" 3, "MEDE" 4, "AmFMMDE" 5, "HJaya" 6, "PSO" 7, "jSO" 8, "IPOP-CMA-ES" 9) noenhanced
+set xtics ("DE" 1, "GA" 2, "DETVSF" 3, "MEDE" 4, "AmFMMDE" 5, "HJaya" 6, "PSO" 7, "jSO" 8, "IPOP-CMA-ES" 9) noenhanced rotate by 45 right
 set xrange [0.4:9.6]
 set style fill solid 0.35 border
 set style boxplot outliers pointtype 7

@@ -9,7 +9,7 @@
 set encoding utf8
 set title "Final fitness — friedman (hammerstein(sweep_3pct.csv))"."\n"."box: quartiles, whiskers: 1.5 IQR, over 10 trials" noenhanced
 set ylabel "Final best fitness (SSE)"
-set xtics ("DE" 1, "GA" 2, "DETVSF" 3, "MEDE" 4, "AmFMMDE" 5, "HJaya" 6, "PSO" 7, "jSO" 8, "IPOP-CMA-ES" 9) noenhanced
+set xtics ("DE" 1, "GA" 2, "DETVSF" 3, "MEDE" 4, "AmFMMDE" 5, "HJaya" 6, "PSO" 7, "jSO" 8, "IPOP-CMA-ES" 9) noenhanced rotate by 45 right
 set xrange [0.4:9.6]
 set style fill solid 0.35 border
 set style boxplot outliers pointtype 7
@@ -17,6 +17,7 @@ set boxwidth 0.5
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 unset key
 set logscale y
+set format y "10^{%L}"
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
