@@ -62,10 +62,11 @@ cd "$out"
   printf '%s\n' '% All tables of this folder; `pdflatex tables.tex` typesets them.' \
     '\documentclass{article}' '\usepackage[margin=2cm]{geometry}' '\usepackage{booktabs}' \
     '\begin{document}'
-  for table in {mede_table1,mede_table1_fair,amfmmde_convergence,league}/{table,stats}.tex friedman/ranks.tex; do
-    printf '\\input{%s}\n\\clearpage\n' "$table"
+  for run in "${runs[@]}"; do
+    read -r name _ <<<"$run"
+    printf '\\input{%s}\n\\clearpage\n' "$name/table.tex" "$name/stats.tex"
   done
-  printf '%s\n' '\end{document}'
+  printf '%s\n' '\input{friedman/ranks.tex}' '\end{document}'
 } > tables.tex
 if command -v pdflatex >/dev/null; then
   pdflatex -interaction=nonstopmode -halt-on-error tables.tex >/dev/null ||

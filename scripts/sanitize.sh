@@ -15,12 +15,6 @@ if [[ "$preset" != asan && "$preset" != tsan ]]; then
   exit 2
 fi
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
-if [[ "$preset" == tsan ]]; then
-  scripts/install-deps.sh tsan  # clang, its TSan runtime, libomp and Archer
-else
-  scripts/install-deps.sh       # g++ brings libasan and libubsan
-fi
-
 # Set before the build too: the build runs the test program to list its tests.
 suppressions=$PWD/tests/sanitizers
 export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1
@@ -28,6 +22,7 @@ export LSAN_OPTIONS=suppressions=$suppressions/lsan.supp
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export TSAN_OPTIONS=suppressions=$suppressions/tsan.supp:second_deadlock_stack=1
 if [[ "$preset" == tsan ]]; then
+  scripts/install-deps.sh tsan  # clang, its TSan runtime, libomp and Archer
   # GCC's libgomp synchronises its threads where ThreadSanitizer cannot see,
   # so the tsan preset builds with clang and LLVM's libomp, whose Archer tool
   # tells ThreadSanitizer about every OpenMP barrier, lock and task. Archer
@@ -36,6 +31,8 @@ if [[ "$preset" == tsan ]]; then
   export OMP_TOOL_LIBRARIES=$llvm_lib/libarcher.so
   [[ -f "$OMP_TOOL_LIBRARIES" ]] || { echo "no Archer at $OMP_TOOL_LIBRARIES (Debian: libomp-14-dev)" >&2; exit 1; }
   export TSAN_OPTIONS=$TSAN_OPTIONS:ignore_noninstrumented_modules=1
+else
+  scripts/install-deps.sh  # g++ brings libasan and libubsan
 fi
 
 cmake --preset "$preset" >/dev/null

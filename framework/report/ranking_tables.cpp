@@ -54,7 +54,7 @@ std::vector<std::string> row_cells(const FriedmanRanking& r, int j, Format f) {
   const auto& avg = r.test.average_ranks;
   const double best = *std::min_element(avg.begin(), avg.end());
   const std::string rank = format_fitness(avg[j], f);
-  cells.push_back(avg[j] == best ? bold(rank, f) : rank);
+  cells.push_back(bold_if_best(rank, format_fitness(best, f), f));
   cells.push_back(mark_cell(r, j, f));
   const auto* c = comparison_of(r, j);
   cells.push_back(c ? p_value(c->p_holm, f) : non_finite(std::nan(""), f));

@@ -157,7 +157,6 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
                               const std::vector<std::vector<TrialResult>>& results,
                               const ReportContext& ctx) {
   std::string csv = "label,trial,final\n", dat, plot;
-  bool positive = true;
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (std::size_t a = 0; a < results.size(); ++a) {
     const std::string& label = e.algorithms[a].label;
@@ -168,7 +167,6 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
     const auto values = finals(results[a]);
     for (double v : values) {
       dat += gnuplot::number(v) + "\n";
-      positive = positive && v > 0;
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
@@ -183,7 +181,7 @@ fs::path write_boxplot_figure(const fs::path& dir, const Experiment& e,
   write_file_atomic(dir / "boxplot.dat", dat);
   std::string text = gnuplot::header("boxplot", "final best fitness of the trials, one box per algorithm",
                                      "boxplot.dat (one index block per algorithm: final)") +
-                     boxplot_settings(e, ctx, positive, hi >= 10 * lo);
+                     boxplot_settings(e, ctx, lo > 0, hi >= 10 * lo);
   if (plot.empty())
     text += "# No algorithm reached a finite fitness: nothing to draw.\n";
   else

@@ -51,35 +51,44 @@ double best_of(const std::vector<AlgorithmStatistics>& rows,
   return all_tie && rows.size() > 1 ? none : best;
 }
 
-// The best of a column as printed; empty where the column has no best.
-std::string best_text(const std::vector<AlgorithmStatistics>& rows,
-                      const std::function<double(const AlgorithmStatistics&)>& value, bool highest,
-                      const std::function<std::string(double)>& print) {
-  const double best = best_of(rows, value, highest);
-  return std::isnan(best) ? "" : print(best);
+// A column of the table: the value that ranks a row and the cell that shows it.
+struct Column {
+  std::function<double(const AlgorithmStatistics&)> value;
+  bool highest;  // higher is better (the success rate)
+  std::function<std::string(const AlgorithmStatistics&)> print;
+};
+
+// Row r's cell, bold when it prints as the best row's cell does.
+std::string column_cell(const AlgorithmStatistics& r, const std::vector<AlgorithmStatistics>& rows,
+                        const Column& c, Format f) {
+  const double best = best_of(rows, c.value, c.highest);
+  std::string best_text;
+  for (const auto& x : rows)
+    if (!std::isnan(best) && c.value(x) == best) best_text = c.print(x);
+  return bold_if_best(c.print(r), best_text, f);
 }
 
 std::vector<std::string> row_cells(const AlgorithmStatistics& r, const CampaignStatistics& s,
                                    Format f) {
-  const auto success = [](const AlgorithmStatistics& x) { return x.success_rate; };
-  const auto ert = [](const AlgorithmStatistics& x) { return x.ert; };
   std::vector<std::string> cells{escape(r.label, f), mark_cell(r, f),
                                  std::isnan(r.p_holm) ? non_finite(r.p_holm, f)
                                                       : format_fitness(r.p_holm, f)};
-  const auto count = [f](double x) { return format_count(x, f); };
-  const auto fitness = [f](double x) { return format_fitness(x, f); };
-  // Every algorithm has the same number of trials, so a rate prints as its
-  // success count does.
-  const auto rate = [&r, f](double x) {
-    return std::isnan(x) ? non_finite(x, f)
-                         : std::to_string(std::lround(x * r.trials)) + "/" + std::to_string(r.trials);
-  };
-  cells.push_back(bold_if_best(rate(r.success_rate), best_text(s.rows, success, true, rate), f));
-  cells.push_back(bold_if_best(count(r.ert), best_text(s.rows, ert, false, count), f));
+  const Column success{[](const AlgorithmStatistics& x) { return x.success_rate; }, true,
+                       [f](const AlgorithmStatistics& x) {
+                         return std::isnan(x.success_rate)
+                                    ? non_finite(x.success_rate, f)
+                                    : std::to_string(x.successes) + "/" + std::to_string(x.trials);
+                       }};
+  const Column ert{[](const AlgorithmStatistics& x) { return x.ert; }, false,
+                   [f](const AlgorithmStatistics& x) { return format_count(x.ert, f); }};
+  cells.push_back(column_cell(r, s.rows, success, f));
+  cells.push_back(column_cell(r, s.rows, ert, f));
   for (std::size_t i = 0; i < r.snapshot_medians.size(); ++i) {
-    const auto at = [i](const AlgorithmStatistics& x) { return x.snapshot_medians[i]; };
-    cells.push_back(
-        bold_if_best(fitness(r.snapshot_medians[i]), best_text(s.rows, at, false, fitness), f));
+    const Column at{[i](const AlgorithmStatistics& x) { return x.snapshot_medians[i]; }, false,
+                    [i, f](const AlgorithmStatistics& x) {
+                      return format_fitness(x.snapshot_medians[i], f);
+                    }};
+    cells.push_back(column_cell(r, s.rows, at, f));
   }
   return cells;
 }
