@@ -34,35 +34,46 @@ std::set<std::string> held_segments(const ModelData& d) {
   return out;
 }
 
-TEST(Holdout, AutoSpreadsHeldOutSegmentsOverTheBand) {
+TEST(Holdout, AutoHoldsOutTheLastQuarterOfEverySegment) {
+  // Every frequency stays in both parts, whatever the number of segments.
+  for (const auto& f : {std::vector<double>{1, 5}, std::vector<double>{10, 1, 50, 2, 20, 5}}) {
+    ModelData d = sines(f);
+    apply_holdout(d, HoldoutSpec{});
+    for (Eigen::Index k = 0; k < d.size(); ++k)
+      ASSERT_EQ(d.estimation[k], (k % 1000) >= 750 ? 0.0 : 1.0) << k;
+    EXPECT_EQ(held_segments(d).size(), f.size());
+    EXPECT_NE(describe_holdout(d, HoldoutSpec{}).find("last quarter of every segment"),
+              std::string::npos);
+  }
+}
+
+TEST(Holdout, AutoWithoutSegmentsHoldsOutTheTailOfEachEighth) {
+  ModelData d = sines({1, 5});
+  d.segment.clear();
+  apply_holdout(d, HoldoutSpec{});
+  // 2000 samples in blocks of 250: samples 188..249 of each are held out
+  // (floor(0.25 * 250) = 62).
+  for (Eigen::Index k = 0; k < d.size(); ++k)
+    ASSERT_EQ(d.estimation[k], (k % 250) >= 188 ? 0.0 : 1.0) << k;
+}
+
+TEST(Holdout, ByFrequencySpreadsHeldOutSegmentsOverTheBand) {
   // Time order is not frequency order: the choice must follow frequency.
   ModelData d = sines({10, 1, 50, 2, 20, 5});
-  apply_holdout(d, HoldoutSpec{});
+  apply_holdout(d, HoldoutSpec::parse("by-frequency"));
   // Ranks by frequency 1,2,5,10,20,50: a quarter of six rounds to two, held
   // at the inner ranks 1 and 4, i.e. 2 Hz and 20 Hz.
   EXPECT_EQ(held_segments(d), (std::set<std::string>{"f2", "f20"}));
   EXPECT_EQ(d.heldout_count(), 2000);
+  EXPECT_NE(describe_holdout(d, HoldoutSpec::parse("by-frequency")).find("f2, f20"),
+            std::string::npos);
 }
 
-TEST(Holdout, AutoNeverHoldsOutTheHighestFrequency) {
+TEST(Holdout, ByFrequencyNeverHoldsOutTheHighestFrequency) {
   ModelData d = sines({1, 2, 5, 10});
-  apply_holdout(d, HoldoutSpec{});
+  apply_holdout(d, HoldoutSpec::parse("by-frequency"));
   EXPECT_EQ(held_segments(d), (std::set<std::string>{"f5"}));
-}
-
-TEST(Holdout, FewSegmentsHoldOutTheLastQuarterOfEach) {
-  ModelData d = sines({1, 5});
-  apply_holdout(d, HoldoutSpec{});
-  for (Eigen::Index k = 0; k < d.size(); ++k)
-    EXPECT_EQ(d.estimation[k], (k % 1000) >= 750 ? 0.0 : 1.0) << k;
-}
-
-TEST(Holdout, WithoutSegmentsTheLastQuarterOfTheRecord) {
-  ModelData d = sines({1, 5});
-  d.segment.clear();
-  apply_holdout(d, HoldoutSpec{});
-  EXPECT_EQ(d.estimation.head(1500).sum(), 1500.0);
-  EXPECT_EQ(d.estimation.tail(500).sum(), 0.0);
+  EXPECT_EQ(HoldoutSpec::parse("by-frequency").text(), "by-frequency");
 }
 
 TEST(Holdout, ExplicitFormsAndNone) {

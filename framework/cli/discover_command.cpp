@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -5,6 +6,7 @@
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
+#include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/ladder_report.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
@@ -20,6 +22,7 @@ struct DiscoverCommandOptions {
   OutputOptions output;
   std::string start = "none";
   int max_steps = 8, refit_restarts = 1;
+  bool resume = false;
 };
 
 std::optional<double> true_noise_sd(const std::string& data_path) {
@@ -28,6 +31,16 @@ std::optional<double> true_noise_sd(const std::string& data_path) {
   if (noise.is_object() && noise.value("sd", nlohmann::json()).is_number())
     return noise["sd"].get<double>();
   return std::nullopt;
+}
+
+void print_step(const Ladder& ladder, const std::string& unit) {
+  const LadderStep& s = ladder.steps.back();
+  const Diagnosis& d = ladder.diagnoses.back();
+  std::cout << "step " << ladder.steps.size() - 1 << (s.added.empty() ? "" : " (+" + s.added + ")")
+            << ": " << s.model.text() << "  ";
+  print_errors(s.errors, unit);
+  std::cout << "  verdict: " << d.verdict << (d.close_call.close ? " (close call)" : "")
+            << "; complete: " << (d.completeness.complete ? "yes" : "no") << std::endl;
 }
 
 void run_discover(DiscoverCommandOptions& o) {
@@ -41,30 +54,42 @@ void run_discover(DiscoverCommandOptions& o) {
   options.diagnose = o.diagnose.diagnose_options(o.fit.fit_options(), source);
   options.max_steps = o.max_steps;
   options.refit_restarts = o.refit_restarts;
-  const auto dir = o.output.prepare("ladder.json");
+  options.substeps = o.fit.substeps;
+  const LadderContext ctx{data, source, holdout, true_noise_sd(source.path),
+                          {{"start", start.text()},
+                           {"fit", options.diagnose.fit.to_json()},
+                           {"diagnose", options.diagnose.to_json()},
+                           {"max_steps", o.max_steps},
+                           {"refit_restarts", o.refit_restarts},
+                           {"substeps", o.fit.substeps}}};
+  // A resumed run reads its checkpoint before anything is written.
+  std::optional<Ladder> restored;
+  if (o.resume) restored = read_checkpoint(o.output.out, checkpoint_context(ctx), data, options);
+  const auto dir = o.resume ? std::filesystem::path(o.output.out) : o.output.prepare("ladder.json");
 
   StatusLine status(stderr_is_terminal());
-  int step = 0;
+  std::size_t step = restored ? restored->diagnoses.size() : 0;
   options.diagnose.fit.status = [&](const std::string& s) {
     status.show("discover step " + std::to_string(step) + ": " + s);
   };
   const std::string unit = source.y_unit;
-  const Ladder ladder = discover(start, data, options, [&](const LadderStep& s, const Diagnosis& d) {
-    status.finish();
-    std::cout << "step " << step++ << (s.added.empty() ? "" : " (+" + s.added + ")") << ": "
-              << s.model.text() << "  ";
-    print_errors(s.errors, unit);
-    std::cout << "  verdict: " << d.verdict << "\n";
-  });
-  status.finish();
-  const LadderContext ctx{data, source, holdout, true_noise_sd(source.path),
-                          {{"fit", options.diagnose.fit.to_json()},
-                           {"diagnose", options.diagnose.to_json()},
-                           {"max_steps", o.max_steps},
-                           {"refit_restarts", o.refit_restarts}}};
   std::string note;
-  write_ladder(dir, ladder, ctx, note);
-  std::cout << "final model: " << ladder.steps.back().model.text() << "\n";
+  const auto on_step = [&](const Ladder& ladder) {
+    status.finish();
+    print_step(ladder, unit);
+    write_ladder(dir, ladder, ctx, note, ladder.diagnoses.size() - 1);
+    step = ladder.diagnoses.size();
+  };
+  if (restored)
+    std::cout << "resuming after step " << restored->diagnoses.size() - 1 << " ("
+              << restored->steps.back().model.text() << ")" << std::endl;
+  const Ladder ladder = restored ? resume_discover(std::move(*restored), data, options, on_step)
+                                 : discover(start, data, options, on_step);
+  status.finish();
+  write_ladder(dir, ladder, ctx, note, ladder.diagnoses.size());
+  std::cout << "final model: " << ladder.steps.back().model.text() << "\n"
+            << "complete: " << (ladder.completeness().complete ? "yes" : "no") << ". "
+            << ladder.completeness().reason << "\n";
   if (!note.empty()) std::cout << note << "\n";
   std::cout << "wrote " << (dir / "ladder.md").string() << ", ladder.json and fit.json\n";
 }
@@ -85,6 +110,9 @@ Action add_discover_command(CLI::App& app) {
   cmd->add_option("--refit-restarts", o->refit_restarts,
                   "global restarts of each extended model that compete with its warm refit")
       ->capture_default_str()->check(CLI::Range(0, 100));
+  cmd->add_flag("--resume", o->resume,
+                "continue the stopped run in --out from its last finished step (checkpoint.json), "
+                "with the same data and options");
   add_fit_options(cmd, o->fit);
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);

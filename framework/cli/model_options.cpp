@@ -1,5 +1,7 @@
 #include "framework/cli/model_options.hpp"
 
+#include <omp.h>
+
 #include "framework/core/error.hpp"
 
 namespace hystbench::cli {
@@ -23,8 +25,10 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
                   "unit of y for reports (default: from DATA.truth.json, if any)");
   if (with_holdout)
     cmd->add_option("--holdout", o.holdout,
-                    "samples never used for fitting: auto (a quarter of the segments spread over "
-                    "the band, or the last quarter), none, last:FRACTION, segments:A,B")
+                    "samples never used for fitting: auto (the last quarter of every segment, so "
+                    "the held-out part spans the fitted band), none, last:FRACTION, "
+                    "segments:A,B, by-frequency (whole segments spread over the band: a test "
+                    "of extrapolation)")
         ->capture_default_str();
 }
 
@@ -36,6 +40,9 @@ FitOptions FitCliOptions::fit_options() const {
     throw InputError("--optimizer-params: not valid JSON: " + std::string(e.what()));
   }
   f.validate();
+  // Every command that fits runs its OpenMP loops on this many threads; the
+  // numbers do not depend on it (seeds are per start and per candidate).
+  if (threads > 0) omp_set_num_threads(threads);
   return f;
 }
 
@@ -55,6 +62,9 @@ void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
                   "polish evaluations per start (0: 300 per parameter, at least 1000)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o.fit.seed, "seed of every random choice")->capture_default_str();
+  cmd->add_option("--threads", o.threads,
+                  "worker threads (0: one per core); the results do not depend on it")
+      ->capture_default_str()->check(CLI::Range(0, 4096));
   cmd->add_option("--substeps", o.substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(CLI::Range(0, 1000));

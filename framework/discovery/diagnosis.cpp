@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <exception>
 #include <optional>
@@ -11,6 +13,7 @@
 #include "framework/discovery/evidence.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
+#include "framework/discovery/resonance.hpp"
 
 namespace hystbench {
 namespace {
@@ -92,9 +95,16 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
   const bool heldout_ok = current.errors.n_heldout == 0 ||
                           c.after.rmse_heldout <= (1.0 - o.heldout_gain) * current.errors.rmse_heldout;
   c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
+  c.check = check_model(extended, r.x, data, o.u_unit, o.y_unit);
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
                                  current.where.value("signatures", nlohmann::json::object()),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
+  // A dynamics effect fitted onto a resonance the model already has only
+  // re-describes that mode; it is shown but never the verdict.
+  if (const auto shared = shared_resonance(extended, r.x, data.sample_time, effect); !shared.empty()) {
+    c.significant = false;
+    c.evidence += " Not counted: " + shared + ".";
+  }
   return c;
 }
 
@@ -109,28 +119,77 @@ nlohmann::json DiagnoseOptions::to_json() const {
           {"candidates", candidates},
           {"bic_threshold", bic_threshold},
           {"candidate_restarts", candidate_restarts},
-          {"heldout_gain", heldout_gain}};
+          {"heldout_gain", heldout_gain},
+          {"close_margin", close_margin}};
 }
 
-const Candidate* Diagnosis::winner() const {
-  if (verdict == "none") return nullptr;
+const Candidate* Diagnosis::find(const std::string& effect) const {
   for (const auto& c : candidates)
-    if (c.effect == verdict) return &c;
+    if (c.effect == effect) return &c;
   return nullptr;
 }
 
-Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
-                   const DiagnoseOptions& o) {
+const Candidate* Diagnosis::winner() const { return verdict == "none" ? nullptr : find(verdict); }
+
+namespace {
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+double noise_sigma(const nlohmann::json& where) {
+  return where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
+}
+
+// The current fit, polished and checked for being at its optimum, with its
+// residual analysis.
+Diagnosis current_fit(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                      const DiagnoseOptions& o) {
   if (o.fit.status) o.fit.status("polishing " + model.text());
-  const FitResult polished = refit_warm(model, data, x, {}, o.fit);
-  Diagnosis d{polished.model, polished.x, fit_errors(polished.model, polished.x, data)};
+  FitResult fit = refit_warm(model, data, x, {}, o.fit);
+  nlohmann::json where = compare_signals(current_comparison(fit.model, fit.x, data, o));
+  const OptimumCheck optimum = ensure_optimum(fit, data, noise_sigma(where), o.fit);
+  if (optimum.improved) where = compare_signals(current_comparison(fit.model, fit.x, data, o));
+  Diagnosis d{fit.model, fit.x, fit_errors(fit.model, fit.x, data)};
   d.bic = bic(d.errors.sse, d.errors.n_estimation, model.dimension());
-  d.where = compare_signals(current_comparison(d.model, d.x, data, o));
+  d.where = std::move(where);
+  d.optimum = optimum;
+  d.completeness = assess_completeness(d.errors, d.where);
+  d.check = check_model(d.model, d.x, data, o.u_unit, o.y_unit);
   d.options = o.to_json();
-  const auto effects = candidate_effects(model, o);
+  return d;
+}
+
+// "candidate 3 of 10 done (msd); best so far arx, ΔBIC −1234; about 40 s left"
+struct CandidateProgress {
+  std::size_t total;
+  std::size_t finished = 0;
+  std::string best_effect;
+  double best_bic = 0;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  std::string done(const std::string& effect, const Candidate* c) {
+    ++finished;
+    if (c && c->delta_bic < best_bic) best_bic = c->delta_bic, best_effect = effect;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double left = elapsed / double(finished) * double(total - finished);
+    std::string s = "candidate " + std::to_string(finished) + " of " + std::to_string(total) +
+                    " done (" + effect + ")";
+    if (!best_effect.empty()) s += "; best so far " + best_effect + ", ΔBIC " + fmt("%.0f", best_bic);
+    if (finished < total) s += "; about " + fmt("%.0f", left) + " s left in this step";
+    return s;
+  }
+};
+
+std::vector<Candidate> try_candidates(const Diagnosis& d, const ModelData& data,
+                                      const DiagnoseOptions& o) {
+  const auto effects = candidate_effects(d.model, o);
   std::vector<std::optional<Candidate>> tried(effects.size());
   std::vector<std::exception_ptr> failed(effects.size());
-  long done = 0;
+  CandidateProgress progress{effects.size()};
   omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < effects.size(); ++i) {
@@ -141,19 +200,67 @@ Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData
       failed[i] = std::current_exception();
     }
 #pragma omp critical(diagnosis_status)
-    if (o.fit.status)
-      o.fit.status("candidates " + std::to_string(++done) + "/" + std::to_string(effects.size()) +
-                   " (" + effects[i] + " done)");
+    if (o.fit.status) o.fit.status(progress.done(effects[i], tried[i] ? &*tried[i] : nullptr));
   }
   for (const auto& e : failed)
     if (e) std::rethrow_exception(e);
-  for (auto& c : tried) d.candidates.push_back(std::move(*c));
-  std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const Candidate& a, const Candidate& b) {
+  std::vector<Candidate> out;
+  for (auto& c : tried) out.push_back(std::move(*c));
+  std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
     if (a.significant != b.significant) return a.significant;
     return a.delta_bic < b.delta_bic;
   });
-  d.verdict = !d.candidates.empty() && d.candidates.front().significant ? d.candidates.front().effect
-                                                                        : "none";
+  return out;
+}
+
+}  // namespace
+
+void decide(Diagnosis& d, const DiagnoseOptions& o) {
+  d.close_call = {};
+  std::vector<const Candidate*> significant;
+  for (const auto& c : d.candidates)
+    if (c.significant) significant.push_back(&c);
+  if (significant.empty()) {
+    d.verdict = "none";
+    return;
+  }
+  const Candidate* by_bic = significant.front();  // candidates are sorted by ΔBIC
+  const Candidate* by_heldout = by_bic;
+  for (const auto* c : significant)
+    if (c->after.rmse_heldout < by_heldout->after.rmse_heldout) by_heldout = c;
+  const bool heldout_decides =
+      d.errors.n_heldout > 0 && by_heldout != by_bic &&
+      by_heldout->after.rmse_heldout <= (1.0 - o.heldout_gain) * by_bic->after.rmse_heldout;
+  d.verdict = heldout_decides ? by_heldout->effect : by_bic->effect;
+  if (d.errors.n_heldout > 0 && by_heldout != by_bic) {
+    d.close_call = {true,
+                    "BIC prefers " + by_bic->effect + " (ΔBIC " + fmt("%.1f", by_bic->delta_bic) +
+                        " against " + fmt("%.1f", by_heldout->delta_bic) + "), the held-out RMSE " +
+                        "prefers " + by_heldout->effect + " (" +
+                        fmt("%.4g", by_heldout->after.rmse_heldout) + " against " +
+                        fmt("%.4g", by_bic->after.rmse_heldout) + "); " +
+                        (heldout_decides ? "the held-out error decides (it is at least " +
+                                               fmt("%.0f", 100 * o.heldout_gain) + " % lower)"
+                                         : "BIC decides (the held-out errors differ by less than " +
+                                               fmt("%.0f", 100 * o.heldout_gain) + " %)"),
+                    heldout_decides ? by_bic->effect : by_heldout->effect};
+    return;
+  }
+  if (significant.size() > 1 && significant[1]->delta_bic - by_bic->delta_bic < o.close_margin)
+    d.close_call = {true,
+                    "the runner-up " + significant[1]->effect + " is within " +
+                        fmt("%.0f", o.close_margin) + " of the winner's ΔBIC (" +
+                        fmt("%.1f", significant[1]->delta_bic) + " against " +
+                        fmt("%.1f", by_bic->delta_bic) +
+                        ") and does not have the better held-out RMSE; BIC decides",
+                    significant[1]->effect};
+}
+
+Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                   const DiagnoseOptions& o) {
+  Diagnosis d = current_fit(model, x, data, o);
+  d.candidates = try_candidates(d, data, o);
+  decide(d, o);
   return d;
 }
 
@@ -169,8 +276,16 @@ nlohmann::json Diagnosis::to_json() const {
                     {"rmse_after", c.after.to_json()["rmse"]},
                     {"heldout_rmse_before", errors.n_heldout ? nlohmann::json(errors.rmse_heldout) : nlohmann::json()},
                     {"heldout_rmse_after", c.after.to_json()["heldout_rmse"]},
-                    {"evidence", c.evidence}});
+                    {"evidence", c.evidence},
+                    {"parameters", c.check.to_json()}});
   return {{"verdict", verdict},
+          {"complete", completeness.complete},
+          {"completeness", completeness.to_json()},
+          {"close_call", {{"close", close_call.close},
+                          {"reason", close_call.reason},
+                          {"runner_up", close_call.runner_up}}},
+          {"optimum", optimum.to_json()},
+          {"parameters", check.to_json()},
           {"model", model.text()},
           {"errors", errors.to_json()},
           {"bic", bic},

@@ -10,15 +10,32 @@
 //   "very strong" evidence on the Kass & Raftery scale, odds above 150:1),
 // and, when samples are held out, its held-out RMSE is at least
 // `heldout_gain` (default 1 %) below the current model's. N counts the
-// estimation samples. The verdict is the best significant candidate, or
-// "none" — which is what a model with a white residual at the noise floor
-// must get.
+// estimation samples.
+//
+// Verdict (README, "Close calls"): among the significant candidates, the one
+// with the lowest ΔBIC — unless another significant candidate has a held-out
+// RMSE at least `heldout_gain` lower, in which case the held-out error
+// decides (BIC is computed on the data the fit saw; the held-out error is
+// the better guard against a candidate that only absorbs the fit's own
+// errors). Either way, when the two criteria disagree or the runner-up's
+// ΔBIC is within `close_margin` of the winner's, the diagnosis is marked a
+// close call and both candidates, with their fitted parameters, are shown.
+// "none" when no candidate is significant — which is what a model with a
+// white residual at the noise floor must get.
+//
+// Before any candidate is tried, the current fit is checked for being off
+// its optimum (fit_at_optimum.hpp), and the diagnosis reports whether the
+// model is complete (completeness.hpp) and what its parameters look like
+// (model_check.hpp).
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "framework/discovery/completeness.hpp"
+#include "framework/discovery/fit_at_optimum.hpp"
 #include "framework/discovery/fit_errors.hpp"
+#include "framework/discovery/model_check.hpp"
 #include "framework/discovery/model_fit.hpp"
 
 namespace hystbench {
@@ -28,6 +45,7 @@ struct DiagnoseOptions {
   std::vector<std::string> candidates;  // empty: every registered effect not in the model
   double bic_threshold = -10.0;
   double heldout_gain = 0.01;
+  double close_margin = 10.0;  // ΔBIC units: "very strong" on the Kass & Raftery scale
   // Global restarts of every extended model that compete with its warm
   // refit: a fit stuck in a poor basin can hide what an effect would give.
   // Skipped when the current residual is white and uncorrelated with the input.
@@ -46,6 +64,13 @@ struct Candidate {
   double delta_bic = 0.0;
   bool significant = false;
   std::string evidence = {};  // one plain sentence
+  ModelCheck check = {};      // its fitted parameters, with standard errors
+};
+
+struct CloseCall {
+  bool close = false;
+  std::string reason;     // why it is a close call, and which rule decided
+  std::string runner_up;  // the other candidate
 };
 
 struct Diagnosis {
@@ -55,11 +80,17 @@ struct Diagnosis {
   double bic = 0.0;
   std::vector<Candidate> candidates = {};  // best first
   std::string verdict = {};                // an effect name or "none"
+  CloseCall close_call = {};
+  OptimumCheck optimum = {};               // done before the candidates
+  Completeness completeness = {};          // of the current fit
+  ModelCheck check = {};                   // of the current fit
   nlohmann::json where = {};               // compare_signals of the current fit
   nlohmann::json options = {};
 
   const Candidate* winner() const;
-  // {"verdict", "model", "candidates": [...], "where", "errors", "bic", "thresholds"}
+  const Candidate* find(const std::string& effect) const;
+  // {"verdict", "complete", "completeness", "close_call", "optimum", "model",
+  //  "parameters", "candidates": [...], "where", "errors", "bic", "options"}
   nlohmann::json to_json() const;
 };
 
@@ -67,10 +98,13 @@ struct Diagnosis {
 // estimation samples.
 double bic(double sse, long n, int k);
 
-// Diagnoses the fitted model (model, x): polishes it once more so that every
-// candidate is compared with a converged fit, then tries each candidate
-// (in parallel). `status` is told what is being tried.
+// Diagnoses the fitted model (model, x): polishes it once more, checks that
+// it is at its optimum (restarts when not), then tries each candidate (in
+// parallel). `status` is told what is being tried.
 Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
                    const DiagnoseOptions& options);
+
+// The verdict and close call of `d` from its (sorted) candidates.
+void decide(Diagnosis& d, const DiagnoseOptions& options);
 
 }  // namespace hystbench

@@ -8,6 +8,7 @@
 
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
+#include "framework/core/text.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
@@ -73,9 +74,23 @@ std::string worst_groups(const nlohmann::json& where, const std::string& unit) {
   return out.empty() ? out : out + "\n";
 }
 
+// "- `model`: name = value ± sd unit, ..." for one candidate's fit.
+std::string parameter_list(const Candidate& c) {
+  std::string out = "- `" + c.model.text() + "`:";
+  for (const auto& p : c.check.parameters)
+    out += " " + p.name + " = " + num(p.value) + (std::isfinite(p.sd) ? " ± " + num(p.sd) : "") +
+           (p.unit.empty() ? "" : " " + p.unit) + ";";
+  return out + "\n";
+}
+
 std::string verdict_section(const Diagnosis& d, const std::string& unit) {
   std::ostringstream out;
   out << "## Verdict\n\n";
+  out << "**Complete: " << (d.completeness.complete ? "yes" : "no") << ".** "
+      << d.completeness.reason << "\n\n";
+  if (d.optimum.triggered)
+    out << "The fit looked off its optimum (" << d.optimum.reason << "), so before any candidate: "
+        << join(d.optimum.actions, "; ") << ".\n\n";
   const Candidate* w = d.winner();
   if (!w) {
     out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
@@ -103,6 +118,12 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
     out << " on the estimation data and from " << num(d.errors.rmse_heldout) << " to "
         << num(w->after.rmse_heldout) << unit << " on the held-out data";
   out << " (ΔBIC = " << num(w->delta_bic) << ").\n\n" << w->evidence << "\n\n";
+  if (d.close_call.close) {
+    out << "**Close call**: " << d.close_call.reason << ". Both fits:\n\n";
+    for (const Candidate* c : {w, d.find(d.close_call.runner_up)})
+      if (c) out << parameter_list(*c);
+    out << "\n";
+  }
   out << "Next: `--model " << w->model.text() << "` (its fit is in `extended_fit.json`).\n\n";
   return out.str();
 }
@@ -118,6 +139,7 @@ std::string where_section(const Diagnosis& d, const std::string& unit,
   if (floor.contains("sigma")) out << "; estimated noise σ " << num(floor["sigma"]) << unit;
   out << ".\n\n";
   out << worst_groups(d.where, unit);
+  for (const auto& warning : d.check.warnings()) out << "- " << warning << "\n";
   out << "Full breakdowns, residual tests and figures: [" << current_report << "](" << current_report
       << ").\n\n";
   return out.str();
@@ -137,6 +159,8 @@ std::string candidates_section(const Diagnosis& d, const std::string& unit) {
          "fit (the new effect starts neutral, so it can only improve the estimation error). ΔBIC = "
          "N ln(SSE_new/SSE_old) + Δk ln N over the N estimation samples.\n\n";
   for (const auto& c : d.candidates) out << "- **" << c.effect << "**: " << c.evidence << "\n";
+  out << "\nFitted parameters of every candidate (± standard error):\n\n";
+  for (const auto& c : d.candidates) out << parameter_list(c);
   out << "\n![candidates](diagnosis_candidates.png)\n";
   return out.str();
 }
@@ -192,6 +216,7 @@ std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& 
   nlohmann::json j = d.to_json();
   j["data"] = source.to_json();
   j["holdout"] = holdout.text();
+  j["holdout_description"] = describe_holdout(data, holdout);
   std::vector<fs::path> files{dir / "diagnosis.json", dir / "fit.json", dir / "report.md"};
   write_file_atomic(dir / "fit.json",
                     make_fit_record(d.model, d.x, data, source, holdout, seed).to_json().dump(2) + "\n");
@@ -212,7 +237,8 @@ std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& 
   j["provenance"] = provenance(omp_get_max_threads(), seed);
   write_file_atomic(dir / "diagnosis.json", j.dump(2) + "\n");
   write_file_atomic(dir / "report.md",
-                    diagnosis_markdown(d, source.file_name(), source.y_unit, "current/report.md"));
+                    diagnosis_markdown(d, source.file_name(), source.y_unit, "current/report.md") +
+                        "\n## Hold-out\n\n" + describe_holdout(data, holdout) + "\n");
   return files;
 }
 

@@ -4,6 +4,9 @@
 #include <optional>
 #include <utility>
 
+#include "framework/core/text.hpp"
+#include "framework/discovery/resonance.hpp"
+
 namespace hystbench {
 namespace {
 
@@ -55,52 +58,93 @@ Pruned prune(FitResult current, const std::string& keep, const ModelData& data,
   return p;
 }
 
-LadderStep make_step(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
-                     const std::string& added, const std::string& evidence) {
-  LadderStep s{model, x, fit_errors(model, x, data)};
-  s.bic = bic(s.errors.sse, s.errors.n_estimation, model.dimension());
-  s.added = added;
-  s.evidence = evidence;
+LadderStep make_step(const Diagnosis& d) {
+  LadderStep s{d.model, d.x, d.errors};
+  s.bic = d.bic;
   return s;
+}
+
+// Who gets the credit for the rung that adding `w` produced. `fitted`: the
+// extended model before pruning.
+std::string attribution(const Candidate& w, bool added_was_neutral, const Pruned& p,
+                        const FitResult& fitted, double sample_time) {
+  if (added_was_neutral)
+    return w.effect + " stayed at its neutral value in the refit: the error fell because the "
+                      "refit found a better fit of the other effects, not because of " +
+           w.effect + (p.removed.empty() ? "" : "; that refit made " + join(p.removed, ", ") +
+                                                    " redundant") +
+           ".";
+  if (p.removed.empty()) return "";
+  const std::string shared = shared_resonance(fitted.model, fitted.x, sample_time, w.effect);
+  return "Adding " + w.effect + " made " + join(p.removed, ", ") +
+         " redundant: removing it lowered the BIC, so it was dropped" +
+         (shared.empty() ? "." : "; " + w.effect + " took over its role: " + shared + ".");
+}
+
+// The rung after the last diagnosis: its winner refitted (warm start and
+// global restarts), then pruned.
+LadderStep next_step(const Ladder& ladder, const ModelData& data, const DiscoverOptions& o) {
+  const auto step = ladder.diagnoses.size() - 1;
+  FitOptions refit = o.diagnose.fit;
+  refit.restarts = o.refit_restarts;
+  refit.seed = o.diagnose.fit.seed + std::uint64_t(step) + 1;
+  const Candidate& w = *ladder.diagnoses.back().winner();
+  const FitResult fitted = fit_model(w.model, data, refit, &w.x);
+  const bool neutral =
+      check_model(fitted.model, fitted.x, data, o.diagnose.u_unit, o.diagnose.y_unit).neutral(w.effect);
+  Pruned p = prune(fitted, neutral ? std::string() : w.effect, data, refit);
+  if (!p.removed.empty()) p.fit = fit_model(p.fit.model, data, refit, &p.fit.x);
+  LadderStep s{p.fit.model, p.fit.x, {}};
+  s.added = w.effect;
+  s.removed = p.removed;
+  s.evidence = w.evidence;
+  s.attribution = attribution(w, neutral, p, fitted, data.sample_time);
+  return s;
+}
+
+// Diagnoses `next` (the fit of a new rung) and appends the rung.
+void climb(Ladder& ladder, const LadderStep& next, const ModelData& data, const DiscoverOptions& o,
+           const LadderObserver& on_step) {
+  Diagnosis d = diagnose(next.model, next.x, data, o.diagnose);
+  LadderStep s = make_step(d);  // the diagnosis polished the fit: that fit is the rung
+  s.added = next.added;
+  s.removed = next.removed;
+  s.evidence = next.evidence;
+  s.attribution = next.attribution;
+  ladder.steps.push_back(std::move(s));
+  ladder.diagnoses.push_back(std::move(d));
+  if (on_step) on_step(ladder);
+}
+
+Ladder run(Ladder ladder, const ModelData& data, const DiscoverOptions& o,
+           const LadderObserver& on_step) {
+  while (!ladder.finished()) {
+    if (int(ladder.diagnoses.size()) > o.max_steps) {
+      ladder.stopped_by_limit = true;
+      break;
+    }
+    climb(ladder, next_step(ladder, data, o), data, o, on_step);
+  }
+  return ladder;
 }
 
 }  // namespace
 
+bool Ladder::finished() const {
+  return stopped_by_limit || (!diagnoses.empty() && diagnoses.back().winner() == nullptr);
+}
+
 Ladder discover(const Model& start, const ModelData& data, const DiscoverOptions& o,
-                const std::function<void(const LadderStep&, const Diagnosis&)>& on_step) {
+                const LadderObserver& on_step) {
   Ladder ladder;
   const FitResult first = fit_model(start, data, o.diagnose.fit);
-  Model model = first.model;
-  Eigen::VectorXd x = first.x;
-  std::string added, evidence;
-  std::vector<std::string> removed;
-  for (int step = 0;; ++step) {
-    Diagnosis d = diagnose(model, x, data, o.diagnose);
-    // The diagnosis polished the fit once more: that polished fit is the rung.
-    ladder.steps.push_back(make_step(d.model, d.x, data, added, evidence));
-    ladder.steps.back().where = d.where;
-    ladder.steps.back().removed = removed;
-    if (on_step) on_step(ladder.steps.back(), d);
-    const bool has_winner = d.winner() != nullptr;
-    ladder.diagnoses.push_back(std::move(d));
-    if (!has_winner) break;
-    if (step == o.max_steps) {
-      ladder.stopped_by_limit = true;
-      break;
-    }
-    FitOptions refit = o.diagnose.fit;
-    refit.restarts = o.refit_restarts;
-    refit.seed = o.diagnose.fit.seed + std::uint64_t(step) + 1;
-    const Candidate& w = *ladder.diagnoses.back().winner();
-    Pruned p = prune(fit_model(w.model, data, refit, &w.x), w.effect, data, refit);
-    if (!p.removed.empty()) p.fit = fit_model(p.fit.model, data, refit, &p.fit.x);
-    model = p.fit.model;
-    x = p.fit.x;
-    removed = p.removed;
-    added = w.effect;
-    evidence = w.evidence;
-  }
-  return ladder;
+  climb(ladder, LadderStep{first.model, first.x, {}}, data, o, on_step);
+  return run(std::move(ladder), data, o, on_step);
+}
+
+Ladder resume_discover(Ladder ladder, const ModelData& data, const DiscoverOptions& o,
+                       const LadderObserver& on_step) {
+  return run(std::move(ladder), data, o, on_step);
 }
 
 }  // namespace hystbench

@@ -8,7 +8,15 @@
 // Bouc-Wen oscillator explains the resonance an ARX block was fitted to).
 // After each addition every other effect is tried out (removed and the rest
 // polished); the removal that lowers the BIC most is made, and again, until
-// no removal lowers it.
+// no removal lowers it. The effect just added is protected from this unless
+// its refit left it doing nothing (neutral within noise, model_check.hpp):
+// then the error fell because of the refit, not because of the effect, and
+// the ladder says so instead of crediting it.
+//
+// A ladder is complete (completeness.hpp) only when its last rung's residual
+// is white and at the noise estimate on the estimation and held-out data; a
+// last verdict of "none" alone does not make it complete.
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -25,15 +33,22 @@ struct LadderStep {
   std::string added = {};                 // effect added at this step ("" for the start)
   std::vector<std::string> removed = {};  // effects the new one made redundant
   std::string evidence = {};              // why it was added
-  nlohmann::json where = {};              // compare_signals of this step's fit
+  std::string attribution = {};           // who made the removed effects redundant, or why
+                                          // the added effect was dropped again
 };
 
 struct Ladder {
   std::vector<LadderStep> steps;
-  std::vector<Diagnosis> diagnoses;  // one per step; the last says "none" or hit max_steps
+  std::vector<Diagnosis> diagnoses;  // one per step: diagnoses[k] examined steps[k]
   bool stopped_by_limit = false;
+  // Diagnoses [0, restored) came from a checkpoint: their step folders were
+  // written by the run that made them.
+  std::size_t restored = 0;
 
   std::vector<std::string> final_effects() const { return steps.back().model.effects(); }
+  // The last rung is complete (its diagnosis's completeness).
+  const Completeness& completeness() const { return diagnoses.back().completeness; }
+  bool finished() const;  // the last diagnosis named nothing, or the step limit was hit
 };
 
 struct DiscoverOptions {
@@ -42,11 +57,21 @@ struct DiscoverOptions {
   // After an effect is added: the winner's warm refit is polished again and
   // `refit_restarts` global restarts of the extended model compete with it.
   int refit_restarts = 1;
+  int substeps = 0;  // of every model of the ladder (0: each effect's default)
 };
 
+// Called after every diagnosis with the ladder so far (its last step and
+// diagnosis are the new ones): to print, and to write the step and a
+// checkpoint.
+using LadderObserver = std::function<void(const Ladder&)>;
+
 // `start` fitted from scratch (diagnose.fit restarts), then the loop.
-// `on_step` (optional) is called after each rung, e.g. to print it.
 Ladder discover(const Model& start, const ModelData& data, const DiscoverOptions& options,
-                const std::function<void(const LadderStep&, const Diagnosis&)>& on_step = {});
+                const LadderObserver& on_step = {});
+
+// Continues `ladder` (restored from a checkpoint: at least one step and
+// diagnosis) exactly as the uninterrupted run would have.
+Ladder resume_discover(Ladder ladder, const ModelData& data, const DiscoverOptions& options,
+                       const LadderObserver& on_step = {});
 
 }  // namespace hystbench

@@ -2,11 +2,13 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "framework/discovery/diagnosis_report.hpp"
 #include "framework/discovery/fit_record.hpp"
+#include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/gnuplot_script.hpp"
@@ -20,8 +22,12 @@ namespace {
 using markdown::num;
 
 double estimated_sigma(const Ladder& ladder) {
-  const auto& floor = ladder.steps.back().where.value("noise_floor", nlohmann::json::object());
+  const auto& floor = ladder.diagnoses.back().where.value("noise_floor", nlohmann::json::object());
   return floor.value("sigma", std::nan(""));
+}
+
+nlohmann::json close_call_json(const CloseCall& c) {
+  return {{"close", c.close}, {"reason", c.reason}, {"runner_up", c.runner_up}};
 }
 
 std::string step_label(const LadderStep& s) {
@@ -86,49 +92,103 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
                      {"heldout_rmse", e["heldout_rmse"]},
                      {"bic", s.bic},
                      {"evidence", s.evidence},
-                     {"verdict", ladder.diagnoses[k].verdict}});
+                     {"attribution", s.attribution},
+                     {"verdict", ladder.diagnoses[k].verdict},
+                     {"close_call", close_call_json(ladder.diagnoses[k].close_call)},
+                     {"optimum", ladder.diagnoses[k].optimum.to_json()},
+                     {"complete", ladder.diagnoses[k].completeness.complete},
+                     {"check", ladder.diagnoses[k].check.to_json()}});
   }
-  nlohmann::json j = {{"steps", steps},
+  const Completeness& c = ladder.completeness();
+  nlohmann::json j = {{"complete", c.complete},
+                      {"reason", c.reason},
+                      {"completeness", c.to_json()},
+                      {"finished", ladder.finished()},
+                      {"steps", steps},
                       {"final_effects", ladder.final_effects()},
                       {"final_model", ladder.steps.back().model.text()},
                       {"stopped_by_limit", ladder.stopped_by_limit},
                       {"noise_floor", {{"estimated_sigma", estimated_sigma(ladder)}}},
                       {"data", ctx.source.to_json()},
                       {"holdout", ctx.holdout.text()},
+                      {"holdout_description", describe_holdout(ctx.data, ctx.holdout)},
                       {"options", ctx.options}};
   if (ctx.true_noise_sd) j["noise_floor"]["true_sigma"] = *ctx.true_noise_sd;
   if (!std::isfinite(estimated_sigma(ladder))) j["noise_floor"]["estimated_sigma"] = nullptr;
   return j;
 }
 
+namespace {
+
+std::string completeness_section(const Ladder& ladder) {
+  const Completeness& c = ladder.completeness();
+  std::string out = std::string("**Complete: ") + (c.complete ? "yes" : "no") + ".** " + c.reason;
+  if (!c.complete && ladder.finished() && !ladder.stopped_by_limit)
+    out += " No catalog effect improves the fit significantly: what is missing is either not in "
+           "the catalog (README, \"Adding a physical effect\") or hidden by the noise.";
+  return out + "\n\n";
+}
+
+std::string status_sentence(const Ladder& ladder) {
+  const std::string from = "Started from `" + ladder.steps.front().model.text() + "`";
+  const std::string model = "`" + ladder.steps.back().model.text() + "`";
+  if (!ladder.finished()) return from + "; the ladder is still running, now at " + model + ".";
+  return from + ", ended with " + model +
+         (ladder.stopped_by_limit ? " (stopped at the step limit, the last verdict still named an effect)"
+                                  : " (the last diagnosis found nothing significant to add)") +
+         ".";
+}
+
+std::string parameters_section(const ModelCheck& check) {
+  std::ostringstream out;
+  out << "## Final parameters\n\n"
+      << markdown::header_row({"parameter", "value", "standard error", "unit", "note"});
+  for (const auto& p : check.parameters) {
+    std::string note = p.at_bound ? "on a bound" : "";
+    if (std::isfinite(p.seconds))
+      note += (note.empty() ? "" : "; ") + num(p.seconds) + " ± " + num(p.sd_seconds) + " s";
+    out << markdown::row({"`" + p.name + "`", num(p.value),
+                          std::isinf(p.sd) ? "undetermined" : num(p.sd), p.unit, note});
+  }
+  out << "\nStandard errors from the Jacobian at the optimum, s²(JᵀJ)⁻¹; they assume a white "
+         "residual and are too small when it is not.\n\n";
+  for (const auto& w : check.warnings()) out << "- " << w << "\n";
+  return out.str();
+}
+
+}  // namespace
+
 std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
   const std::string unit = ctx.source.y_unit.empty() ? "" : " " + ctx.source.y_unit;
   std::ostringstream out;
-  out << "# Discovery on " << ctx.source.file_name() << "\n\n";
-  out << "Started from `" << ladder.steps.front().model.text() << "`, ended with `"
-      << ladder.steps.back().model.text() << "`"
-      << (ladder.stopped_by_limit ? " (stopped at the step limit, the last verdict still named an effect)"
-                                  : " (the last diagnosis found nothing significant to add)")
-      << ".\n\n";
+  out << "# Discovery on " << ctx.source.file_name() << "\n\n" << completeness_section(ladder);
+  out << status_sentence(ladder) << "\n\n";
   out << markdown::header_row({"step", "added", "model", "k", "RMSE" + unit,
-                               "held-out RMSE" + unit, "BIC"});
+                               "held-out RMSE" + unit, "BIC", "complete"});
   for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
     const auto& s = ladder.steps[k];
     out << markdown::row({std::to_string(k), step_label(s), s.model.text(),
                           std::to_string(s.model.dimension()), num(s.errors.rmse_estimation),
-                          s.errors.n_heldout ? num(s.errors.rmse_heldout) : "–", num(s.bic)});
+                          s.errors.n_heldout ? num(s.errors.rmse_heldout) : "–", num(s.bic),
+                          ladder.diagnoses[k].completeness.complete ? "yes" : "no"});
   }
   out << "\nEstimated noise σ " << num(estimated_sigma(ladder)) << unit;
   if (ctx.true_noise_sd) out << "; true noise σ " << num(*ctx.true_noise_sd) << unit;
-  out << ".\n\n![ladder](ladder.png)\n\n## Why each effect was added\n\n";
+  out << ". Held out: " << describe_holdout(ctx.data, ctx.holdout) << "\n\n";
+  out << "![ladder](ladder.png)\n\n## Why each effect was added\n\n";
   for (std::size_t k = 1; k < ladder.steps.size(); ++k) {
+    const Diagnosis& d = ladder.diagnoses[k - 1];
     out << k << ". **" << ladder.steps[k].added << "**: " << ladder.steps[k].evidence
         << " ([diagnosis](step_" << k - 1 << "/report.md))";
-    if (!ladder.steps[k].removed.empty())
-      out << " It made " << join(ladder.steps[k].removed, ", ")
-          << " redundant: removing it lowered the BIC, so it was dropped.";
+    if (d.close_call.close) out << " *Close call*: " << d.close_call.reason << ".";
+    if (!ladder.steps[k].attribution.empty()) out << " " << ladder.steps[k].attribution;
     out << "\n";
   }
+  for (std::size_t k = 0; k < ladder.diagnoses.size(); ++k)
+    if (ladder.diagnoses[k].optimum.triggered)
+      out << "\nStep " << k << ": the fit looked off its optimum (" << ladder.diagnoses[k].optimum.reason
+          << "); " << join(ladder.diagnoses[k].optimum.actions, "; ") << ".\n";
+  out << "\n" << parameters_section(ladder.diagnoses.back().check);
   out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
       << ladder.steps.size() - 1 << "/report.md). Final fit: `fit.json` (use it with "
       << "`hystbench compare`).\n";
@@ -137,9 +197,9 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
 
 std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir,
                                                 const Ladder& ladder, const LadderContext& ctx,
-                                                std::string& note) {
+                                                std::string& note, std::size_t first_step) {
   std::vector<std::filesystem::path> files;
-  for (std::size_t k = 0; k < ladder.diagnoses.size(); ++k) {
+  for (std::size_t k = std::max(first_step, ladder.restored); k < ladder.diagnoses.size(); ++k) {
     const auto step = write_diagnosis(dir / ("step_" + std::to_string(k)), ladder.diagnoses[k],
                                       ctx.data, ctx.source, ctx.holdout, note);
     files.insert(files.end(), step.begin(), step.end());
@@ -148,14 +208,21 @@ std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir
   const std::uint64_t seed = ctx.options.value("fit", nlohmann::json::object()).value("seed", 1);
   FitRecord final_fit = make_fit_record(last.model, last.x, ctx.data, ctx.source, ctx.holdout, seed);
   write_file_atomic(dir / "fit.json", final_fit.to_json().dump(2) + "\n");
+  write_file_atomic(dir / "checkpoint.json",
+                    checkpoint_json(ladder, checkpoint_context(ctx)).dump(1) + "\n");
   auto j = ladder_json(ladder, ctx);
   j["provenance"] = provenance(omp_get_max_threads(), seed);
   write_file_atomic(dir / "ladder.json", j.dump(2) + "\n");
   write_file_atomic(dir / "ladder.md", ladder_markdown(ladder, ctx));
   const auto script = write_ladder_figure(dir, ladder, ctx);
-  files.insert(files.end(), {dir / "fit.json", dir / "ladder.json", dir / "ladder.md", script});
+  files.insert(files.end(), {dir / "fit.json", dir / "checkpoint.json", dir / "ladder.json",
+                             dir / "ladder.md", script});
   for (const auto& image : render_figures(dir, {script}, note)) files.push_back(image);
   return files;
+}
+
+nlohmann::json checkpoint_context(const LadderContext& ctx) {
+  return {{"data", ctx.source.to_json()}, {"holdout", ctx.holdout.text()}, {"options", ctx.options}};
 }
 
 }  // namespace hystbench

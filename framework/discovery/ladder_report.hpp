@@ -24,10 +24,17 @@ struct LadderContext {
 nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx);
 std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx);
 
-// Writes everything into `dir`; returns the files; sets `note` when figures
-// could not be rendered.
+// Writes the ladder so far into `dir`: the step folders from `first_step`
+// on (never those restored from a checkpoint), fit.json of the last rung,
+// checkpoint.json, ladder.json, ladder.md and the figure. Called after every
+// diagnosis with the new step only, so a stopped run leaves every finished
+// step behind. Returns the files; sets `note` when figures could not be
+// rendered.
 std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir,
                                                 const Ladder& ladder, const LadderContext& ctx,
-                                                std::string& note);
+                                                std::string& note, std::size_t first_step = 0);
+
+// What a resumed run must match: data, hold-out and options.
+nlohmann::json checkpoint_context(const LadderContext& ctx);
 
 }  // namespace hystbench

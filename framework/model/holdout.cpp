@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
@@ -44,14 +45,23 @@ void hold_out_tail(ModelData& d, Eigen::Index begin, Eigen::Index end, double fr
   d.estimation.segment(end - held, held).setZero();
 }
 
+constexpr double kTailFraction = 0.25;
+constexpr int kBlocksWithoutSegments = 8;
+
 void auto_holdout(ModelData& d) {
-  if (d.segment.empty()) return hold_out_tail(d, 0, d.size(), 0.25);
-  const auto spans = segment_spans(d);
-  const auto n = spans.size();
-  if (n < 4) {
-    for (const auto& s : spans) hold_out_tail(d, s.begin, s.end, 0.25);
+  if (d.segment.empty()) {
+    for (int b = 0; b < kBlocksWithoutSegments; ++b)
+      hold_out_tail(d, d.size() * b / kBlocksWithoutSegments,
+                    d.size() * (b + 1) / kBlocksWithoutSegments, kTailFraction);
     return;
   }
+  for (const auto& s : segment_spans(d)) hold_out_tail(d, s.begin, s.end, kTailFraction);
+}
+
+void by_frequency_holdout(ModelData& d) {
+  const auto spans = d.segment.empty() ? std::vector<SegmentSpan>{} : segment_spans(d);
+  const auto n = spans.size();
+  if (n < 4) return auto_holdout(d);
   std::vector<std::size_t> rank(n);
   for (std::size_t i = 0; i < n; ++i) rank[i] = i;
   std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) {
@@ -68,12 +78,17 @@ void auto_holdout(ModelData& d) {
 }  // namespace
 
 HoldoutSpec HoldoutSpec::parse(const std::string& text, const std::string& where) {
-  const std::string forms = "auto, none, last:FRACTION (e.g. last:0.25) or segments:LABEL,LABEL";
+  const std::string forms =
+      "auto, none, last:FRACTION (e.g. last:0.25), segments:LABEL,LABEL or by-frequency";
   HoldoutSpec s;
   const auto colon = text.find(':');
   const std::string head = text.substr(0, colon);
   const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
   if (text == "auto") return s;
+  if (text == "by-frequency") {
+    s.mode = Mode::ByFrequency;
+    return s;
+  }
   if (text == "none") {
     s.mode = Mode::None;
     return s;
@@ -113,6 +128,7 @@ std::string HoldoutSpec::text() const {
     case Mode::None: return "none";
     case Mode::Last: return "last:" + number_text(fraction);
     case Mode::Segments: return "segments:" + join(segments, ",");
+    case Mode::ByFrequency: return "by-frequency";
   }
   return "auto";
 }
@@ -122,6 +138,7 @@ void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
   switch (spec.mode) {
     case HoldoutSpec::Mode::None: break;
     case HoldoutSpec::Mode::Auto: auto_holdout(d); break;
+    case HoldoutSpec::Mode::ByFrequency: by_frequency_holdout(d); break;
     case HoldoutSpec::Mode::Last: hold_out_tail(d, 0, d.size(), spec.fraction); break;
     case HoldoutSpec::Mode::Segments:
       if (d.segment.empty())
@@ -136,6 +153,38 @@ void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
   }
   if (d.estimation_count() < 2)
     throw InputError("--holdout " + spec.text() + ": leaves fewer than two samples to fit");
+}
+
+}  // namespace hystbench
+
+namespace hystbench {
+
+std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
+  const std::string count = std::to_string(d.heldout_count()) + " of " + std::to_string(d.size()) +
+                            " samples held out";
+  switch (spec.mode) {
+    case HoldoutSpec::Mode::None:
+      return "Nothing held out (--holdout none): every error is on the data the fit saw.";
+    case HoldoutSpec::Mode::Auto:
+      return count + (d.segment.empty() ? ": the last quarter of each eighth of the record"
+                                        : ": the last quarter of every segment") +
+             ", so the held-out part spans every excitation frequency and amplitude the fit "
+             "sees and judges the model where it was fitted, not where it extrapolates.";
+    case HoldoutSpec::Mode::Last:
+      return count + ": the last " + number_text(100 * spec.fraction) + " % of the record.";
+    case HoldoutSpec::Mode::Segments:
+      return count + ": the segments " + join(spec.segments, ", ") +
+             " (chosen by the user); effects are selected on how they extrapolate to them.";
+    case HoldoutSpec::Mode::ByFrequency: {
+      std::set<std::string> held;
+      for (Eigen::Index k = 0; k < d.size(); ++k)
+        if (d.estimation[k] == 0.0 && !d.segment.empty()) held.insert(d.segment[k]);
+      return count + ": whole segments spread over the frequency band (" +
+             join(std::vector<std::string>(held.begin(), held.end()), ", ") +
+             "); a test of extrapolation to frequencies the fit never sees.";
+    }
+  }
+  return count + ".";
 }
 
 }  // namespace hystbench

@@ -9,12 +9,13 @@
 namespace hystbench {
 
 struct HoldoutSpec {
-  enum class Mode { Auto, None, Last, Segments };
+  enum class Mode { Auto, None, Last, Segments, ByFrequency };
   Mode mode = Mode::Auto;
   double fraction = 0.25;             // Last: the final fraction of the record
   std::vector<std::string> segments;  // Segments: the labels held out
 
-  // "auto", "none", "last:0.25", "segments:sine_2Hz,sine_20Hz". Throws
+  // "auto", "none", "last:0.25", "segments:sine_2Hz,sine_20Hz",
+  // "by-frequency". Throws
   // InputError naming `where` and the accepted forms.
   static HoldoutSpec parse(const std::string& text, const std::string& where = "--holdout");
   std::string text() const;
@@ -22,13 +23,23 @@ struct HoldoutSpec {
 
 // Marks the held-out samples in data.estimation (0 = held out).
 //
-// Auto with four or more segments: the segments are ranked by their dominant
-// input frequency (zero crossings), and a quarter of them (at least one) is
-// held out at evenly spaced inner ranks, so that neither part keeps only the
-// low or only the high frequencies; with one to three segments the last
-// quarter of every segment; without segments the last quarter of the record.
+// Auto holds out the last quarter of every segment run (of each of eight
+// equal blocks when the data have no segment column). Model selection is
+// judged on the held-out part, so it must hold every excitation frequency
+// and amplitude that the fit sees: a hold-out of whole segments keeps a band
+// (say the one at a resonance) out of every fit and rewards effects that
+// happen to extrapolate into it.
+//
+// ByFrequency (the former default) ranks whole segments by their dominant
+// input frequency and holds out a quarter of them at evenly spaced inner
+// ranks: a test of extrapolation to unseen frequencies, not a selection
+// hold-out. With fewer than four segments it falls back to Auto.
+//
 // Throws InputError when a named segment does not exist or nothing would be
 // left to fit.
 void apply_holdout(ModelData& data, const HoldoutSpec& spec);
+
+// One sentence for reports: what `spec` held out of `data` and why.
+std::string describe_holdout(const ModelData& data, const HoldoutSpec& spec);
 
 }  // namespace hystbench

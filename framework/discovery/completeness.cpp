@@ -1,0 +1,101 @@
+#include "framework/discovery/completeness.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "framework/discovery/error_metrics.hpp"
+
+namespace hystbench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double number(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : kNaN;
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+void worst_segment(const nlohmann::json& where, Completeness& c) {
+  double worst = -1;
+  for (const auto& s : where.value("by_segment", nlohmann::json::array())) {
+    const double rmse = number(s, "rmse");
+    if (rmse > worst) worst = rmse, c.worst_segment = s.value("segment", std::string());
+  }
+  c.worst_segment_rmse_over_sigma = worst >= 0 && c.sigma > 0 ? worst / c.sigma : kNaN;
+}
+
+std::string statistics_text(const Completeness& c, bool heldout) {
+  std::string s = "RMSE " + fmt("%.3g", c.rmse_over_sigma) + " σ on the estimation data";
+  if (heldout) s += " and " + fmt("%.3g", c.heldout_rmse_over_sigma) + " σ held out";
+  s += " (σ = " + fmt("%.4g", c.sigma) + "), Ljung–Box p = " + fmt("%.3g", c.ljung_box_p) + ", " +
+       std::to_string(c.ccf_outside) + " of " + std::to_string(c.ccf_lags) +
+       " input–residual cross-correlation lags outside the 99 % band";
+  if (!c.worst_segment.empty())
+    s += "; the error is largest in segment " + c.worst_segment + " (" +
+         fmt("%.3g", c.worst_segment_rmse_over_sigma) + " σ)";
+  return s;
+}
+
+}  // namespace
+
+Completeness assess_completeness(const FitErrors& errors, const nlohmann::json& where,
+                                 double tolerance) {
+  Completeness c;
+  const nlohmann::json& residual = where.value("residual", nlohmann::json::object());
+  const nlohmann::json& ccf = residual.value("ccf", nlohmann::json::object());
+  c.sigma = number(where.value("noise_floor", nlohmann::json::object()), "sigma");
+  c.ljung_box_p = number(residual.value("ljung_box", nlohmann::json::object()), "p_value");
+  c.ccf_outside = ccf.value("outside", 0);
+  c.ccf_lags = int(ccf.value("lags", nlohmann::json::array()).size());
+  const bool heldout = errors.n_heldout > 0;
+  c.rmse_over_sigma = c.sigma > 0 ? errors.rmse_estimation / c.sigma : kNaN;
+  c.heldout_rmse_over_sigma = heldout && c.sigma > 0 ? errors.rmse_heldout / c.sigma : kNaN;
+  worst_segment(where, c);
+  if (!(c.sigma > 0)) {
+    c.kind = "no_noise_estimate";
+    c.reason = "No noise estimate: completeness cannot be judged against the noise floor.";
+    return c;
+  }
+  const bool at_floor = c.rmse_over_sigma <= tolerance &&
+                        (!heldout || c.heldout_rmse_over_sigma <= tolerance);
+  const bool white = c.ljung_box_p > 0.01 && c.ccf_outside <= kChanceCcfLags;
+  const std::string numbers = statistics_text(c, heldout) + ".";
+  c.complete = at_floor && white;
+  if (c.complete) {
+    c.kind = "white_at_floor";
+    c.reason = "The residual is white and the error is at the noise estimate on the estimation" +
+               std::string(heldout ? " and the held-out data" : " data") + ": " + numbers;
+  } else if (at_floor) {
+    c.kind = "coloured_at_floor";
+    c.reason = "The error is at the noise estimate, but the residual is not white (coloured "
+               "noise, or a small systematic error): " + numbers;
+  } else {
+    c.kind = "systematic";
+    c.reason = "Something systematic is left: " + numbers;
+  }
+  return c;
+}
+
+nlohmann::json Completeness::to_json() const {
+  return {{"complete", complete},
+          {"kind", kind},
+          {"reason", reason},
+          {"sigma", finite_or_null(sigma)},
+          {"rmse_over_sigma", finite_or_null(rmse_over_sigma)},
+          {"heldout_rmse_over_sigma", finite_or_null(heldout_rmse_over_sigma)},
+          {"ljung_box_p", finite_or_null(ljung_box_p)},
+          {"ccf_outside", ccf_outside},
+          {"ccf_lags", ccf_lags},
+          {"worst_segment", worst_segment},
+          {"worst_segment_rmse_over_sigma", finite_or_null(worst_segment_rmse_over_sigma)},
+          {"tolerance", kFloorTolerance}};
+}
+
+}  // namespace hystbench
