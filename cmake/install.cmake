@@ -1,6 +1,8 @@
 # `cmake --install` puts the command, the core library, its public headers
 # and a CMake package in the prefix, so that a separate project can build a
-# plugin with find_package(hystbench) and the same registration macro.
+# plugin with find_package(hystbench) and the same registration macro. The
+# build tree holds the same package (headers from the source tree), so a
+# plugin also builds against it without installing: -Dhystbench_DIR=<build>.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS hystbench_core hystbench
@@ -14,6 +16,9 @@ install(DIRECTORY framework problems
 install(EXPORT hystbenchTargets
         NAMESPACE hystbench::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hystbench)
+export(EXPORT hystbenchTargets
+       NAMESPACE hystbench::
+       FILE ${CMAKE_BINARY_DIR}/hystbenchTargets.cmake)
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/hystbenchConfig.cmake.in
   ${CMAKE_BINARY_DIR}/hystbenchConfig.cmake

@@ -186,4 +186,40 @@ TEST_F(Cli, BadCommandLineExitsWithTwo) {
   EXPECT_EQ(hystbench("run --help").code, 0);
 }
 
+TEST_F(Cli, MistypedCommandIsNamedWithTheClosestOne) {
+  const auto typo = hystbench("discovr --data d.csv --out x");
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_EQ(typo.output, "hystbench: error: unknown command 'discovr'; did you mean 'discover'? "
+                         "(hystbench --help lists the commands)\n");
+  // Two neighbours swapped count as one edit.
+  EXPECT_EQ(hystbench("lsit").output, "hystbench: error: unknown command 'lsit'; did you mean "
+                                      "'list'? (hystbench --help lists the commands)\n");
+  const auto far = hystbench("frobnicate");
+  EXPECT_EQ(far.code, 2);
+  EXPECT_EQ(far.output,
+            "hystbench: error: unknown command 'frobnicate' (hystbench --help lists the commands)\n");
+  const auto none = hystbench("");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_EQ(none.output, "hystbench: error: no command given (hystbench --help lists the commands)\n");
+}
+
+// CLI11's own range check printed an open bound as a 309-digit number.
+TEST_F(Cli, OutOfRangeNumberSaysWhatIsAllowed) {
+  const fs::path out = dir_ / "fit";
+  const auto o = hystbench("fit --data " + default_data() + " --model msd --evaluations -5 --out " +
+                           out.string());
+  EXPECT_EQ(o.code, 2);
+  EXPECT_EQ(o.output, "hystbench: error: --evaluations: -5 is not allowed; give a positive number "
+                      "of evaluations (0 = default)\n");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(hystbench("simulate --params p.json --excitation e.json --noise 11 --out x.csv").output,
+            "hystbench: error: --noise: 11 is not allowed; give a fraction of the output RMS from "
+            "0 to 10\n");
+  // --help gives the bounds as people write them.
+  const auto help = hystbench("fit --help");
+  EXPECT_NE(help.output.find("--evaluations INT:0 or more"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("0 to 1000"), std::string::npos) << help.output;
+  EXPECT_EQ(help.output.find("1.79769"), std::string::npos) << help.output;
+}
+
 }  // namespace

@@ -3,10 +3,12 @@
 // bit for bit; bad input answered with one clear message and exit 2.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 
 #include "tests/run_command.hpp"
@@ -22,6 +24,15 @@ using hystbench::test_support::Outcome;
 Outcome run(const std::string& args) { return hystbench::test_support::hystbench(args); }
 
 nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
+
+// Digits of a printed number from its first non-zero one, exponent aside:
+// "0.01235" and "1.235e-05" have 4.
+int significant_digits(const std::string& printed) {
+  std::string digits;
+  for (char c : printed.substr(0, printed.find_first_of("eE")))
+    if (std::isdigit(static_cast<unsigned char>(c)) && (c != '0' || !digits.empty())) digits += c;
+  return int(digits.size());
+}
 
 // Data from `msd` with a sensor offset of 2 µm hidden in it: 2.4 s at 500 Hz.
 class DiscoveryCli : public ::testing::Test {
@@ -79,6 +90,39 @@ TEST_F(DiscoveryCli, CompareWritesMetricsReportAndFigures) {
   EXPECT_TRUE(fs::exists(dir_ / "c" / "residual.gp"));
   // A model without the offset leaves a residual with a clearly non-zero mean.
   EXPECT_GT(std::abs(m["residual"]["mean"].get<double>()), 1.0);
+
+  // The terminal shows four significant digits and the unit; the file keeps every digit.
+  for (const char* part : {"estimation", "heldout"}) {
+    const std::regex line(std::string("  ") + part + R"(: RMSE (\S+) µm, fit (\S+) %, (\d+) samples)");
+    std::smatch found;
+    ASSERT_TRUE(std::regex_search(c.output, found, line)) << c.output;
+    for (int i : {1, 2}) {
+      const std::string printed = found[i];
+      const double full = m[part][i == 1 ? "rmse" : "fit_percent"].get<double>();
+      EXPECT_NEAR(std::stod(printed), full, 5e-4 * std::abs(full)) << printed;
+      EXPECT_LE(significant_digits(printed), 4) << printed;
+    }
+    EXPECT_EQ(std::stol(found[3]), m[part]["n"].get<long>());
+  }
+  const std::regex sigma(R"(  estimated noise sigma (\S+) µm \(RMSE / sigma (\S+)\))");
+  std::smatch found;
+  ASSERT_TRUE(std::regex_search(c.output, found, sigma)) << c.output;
+  EXPECT_NEAR(std::stod(found[1]), m["noise_floor"]["sigma"].get<double>(),
+              5e-4 * m["noise_floor"]["sigma"].get<double>());
+
+  // Seven samples are too few for a noise estimate: the terminal says why, never "null".
+  std::string few = "t,u,y\n";
+  for (int k = 0; k < 7; ++k) few += std::to_string(k * 0.002) + ",1,0.1\n";
+  temp_.write("few.csv", few);
+  const auto short_compare = run("compare --data " + path("few.csv") + " --fit " +
+                                 path("f/fit.json") + " --out " + path("few"));
+  ASSERT_EQ(short_compare.code, 0) << short_compare.output;
+  EXPECT_NE(short_compare.output.find("  noise sigma not estimated (fewer than 8 samples)\n"),
+            std::string::npos)
+      << short_compare.output;
+  EXPECT_EQ(short_compare.output.find("null"), std::string::npos) << short_compare.output;
+  EXPECT_NE(short_compare.output.find("fit % not defined (y is constant)"), std::string::npos)
+      << short_compare.output;
 }
 
 TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {

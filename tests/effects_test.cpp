@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "framework/core/error.hpp"
 #include "framework/io/measurement.hpp"
 #include "framework/model/effect.hpp"
 #include "framework/model/model.hpp"
@@ -340,6 +341,25 @@ TEST(EffectCatalog, HasTheDesignedEffects) {
   for (const char* n : {"hysteresis", "asymmetry", "saturation", "backlash", "delay", "msd", "arx",
                         "creep", "offset", "drift", "second_mode"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+}
+
+// An empty list is refused rather than read as the gain alone, which has to
+// be asked for by name.
+TEST(EffectCatalog, EmptyModelListIsRefusedAndNoneIsTheGainAlone) {
+  for (const char* list : {"", " ", " , "}) {
+    try {
+      Model::parse(list, "--start");
+      ADD_FAILURE() << "'" << list << "' was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "--start: the effect list is empty; write none for the gain alone, or effects such "
+                "as hysteresis,msd (`hystbench list effects` lists them)");
+    }
+  }
+  const Model gain = Model::parse("none");
+  EXPECT_TRUE(gain.effects().empty());
+  EXPECT_EQ(gain.parameter_names(), std::vector<std::string>{"gain"});
+  EXPECT_EQ(gain.text(), "none");
 }
 
 TEST(EffectCatalog, NeutralIsInsideBoundsAndEveryFieldIsDocumented) {

@@ -278,6 +278,43 @@ TEST(Measurement, RejectsRaggedRows) {
   }
 }
 
+// A spreadsheet in a locale with decimal commas saves ';' between fields;
+// the message says so instead of blaming the column names.
+TEST(Measurement, RejectsSemicolonDelimiterNamingIt) {
+  TempDir dir;
+  const std::string msg =
+      read_error(dir.write("semi.csv", "# exported\nt;u;y\n0;1,5;10\n0,5;2;20\n"));
+  EXPECT_TRUE(msg.ends_with(
+      "/semi.csv, line 2: the header 't;u;y' seems to use ';' as the delimiter; hystbench reads "
+      "comma-separated files with decimal points (1.5, not 1,5). Save the file as "
+      "comma-separated with '.' in numbers, or convert it, e.g. sed 's/,/./g; s/;/,/g'"))
+      << msg;
+  // Mapping the columns does not get past it: the whole header is one name.
+  EXPECT_CONTAINS(read_error(dir.path() / "semi.csv", ColumnMap::parse("t=t;u;y")),
+                  "';' as the delimiter");
+}
+
+// Decimal commas in a comma-separated file split each number in two.
+TEST(Measurement, RejectsDecimalCommasNamingThem) {
+  TempDir dir;
+  const std::string msg =
+      read_error(dir.write("commas.csv", "t,u,y\n0,1,10\n0,5,2,20\n1,3,30\n"));
+  EXPECT_TRUE(msg.ends_with(
+      "/commas.csv, line 3: the row has 4 fields but the header (line 1) has 3, and no decimal "
+      "point: the file seems to use decimal commas; hystbench reads comma-separated files with "
+      "decimal points (1.5, not 1,5). Write the numbers with '.' instead"))
+      << msg;
+  // Quoted, a decimal comma stays in one field, which is then not a number.
+  const std::string quoted =
+      read_error(dir.write("quoted.csv", "t,u,y\n0,1,10\n0.5,\"-2,25\",20\n1,3,30\n"));
+  EXPECT_CONTAINS(quoted, "quoted.csv, line 3: column 'u': '-2,25' is not a number: it seems to be "
+                          "written with a decimal comma");
+  // A row with a decimal point and one field too many is an ordinary ragged row.
+  const std::string ragged = read_error(dir.write("ragged.csv", "t,u,y\n0,1,10\n0.5,2,20,1\n"));
+  EXPECT_CONTAINS(ragged, "check for a missing or extra comma");
+  EXPECT_EQ(ragged.find("decimal"), std::string::npos) << ragged;
+}
+
 TEST(Measurement, RejectsUnterminatedQuote) {
   TempDir dir;
   const std::string msg = read_error(dir.write("quote.csv", "t,u,y\n0,\"1,10\n0.5,2,20\n"));

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs hystbench into a temporary prefix, builds the example effect in
 # examples/thermal_drift_effect/ against that installed copy with
-# find_package(hystbench), and checks that the installed command picks it up
-# through `--plugin`: listed, exactly neutral at k = 0, simulated, named by
-# `diagnose` as what a model without it is missing (and not named when nothing
-# is missing), added by `discover`, which then stops and recovers k and tau.
+# find_package(hystbench) (and once against the build tree), and checks that
+# the installed command picks it up through `--plugin`: listed, exactly
+# neutral at k = 0, simulated, named by `diagnose` as what a model without it
+# is missing (and not named when nothing is missing), added by `discover`,
+# which then stops and recovers k and tau.
 set -euo pipefail
 build_dir=$1
 source_dir=$2
@@ -28,6 +29,16 @@ hystbench="$work/prefix/bin/hystbench"
 plugin="$work/plugin/thermal_drift.so"
 [[ -f "$plugin" ]] || fail "the example did not build $plugin"
 
+# The same example builds against the build tree, without installing.
+cmake -S "$source_dir/examples/thermal_drift_effect" -B "$work/plugin_from_build" \
+      -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build_dir" -DCMAKE_CXX_COMPILER="$core_compiler" \
+      -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
+cmake --build "$work/plugin_from_build" >/dev/null
+"$build_dir/hystbench" list effects --plugin "$work/plugin_from_build/thermal_drift.so" \
+  > "$work/list_from_build.txt"
+grep -q "^  thermal_drift \[nonlinearity\]" "$work/list_from_build.txt" ||
+  fail "the example built against the build tree is not listed by its hystbench"
+
 # Listed with its stage and parameters only when the plugin is loaded.
 "$hystbench" list effects --plugin "$plugin" > "$work/list.txt"
 grep -q "^  thermal_drift \[nonlinearity\] - thermal expansion" "$work/list.txt" ||
@@ -40,23 +51,17 @@ if grep -q thermal_drift "$work/list_without.txt"; then
   fail "thermal_drift is listed without --plugin"
 fi
 
-# 8 s at 500 Hz: a zero-mean 5 Hz sine that heats the actuator for 4 s, then
-# no drive for 4 s while it cools. Without the thermal term the output would
-# be symmetric about zero and vanish with the drive.
-cat > "$work/excitation.json" <<'JSON'
-{"sample_rate": 500,
- "segments": [
-   {"type": "sine", "frequency": 5, "amplitude": 1, "offset": 0, "duration": 4, "label": "heating"},
-   {"type": "steps", "levels": [0], "hold": 4, "ramp": 0.05, "label": "cooling"}]}
-JSON
+# The example's excitation.json, 8 s at 500 Hz: a zero-mean 5 Hz sine that
+# heats the actuator for 4 s, then no drive for 4 s while it cools. Without
+# the thermal term the output would be symmetric about zero and vanish with
+# the drive. Its true.json: k = 0.3, tau = 1.5 s.
+example="$source_dir/examples/thermal_drift_effect"
+cp "$example/excitation.json" "$example/true.json" "$work/"
 cat > "$work/msd.json" <<'JSON'
 {"gain": 1.0, "msd.period": 0.02, "msd.zeta": 0.2}
 JSON
 cat > "$work/neutral.json" <<'JSON'
 {"gain": 1.0, "msd.period": 0.02, "msd.zeta": 0.2, "thermal_drift.k": 0, "thermal_drift.tau": 1.5}
-JSON
-cat > "$work/true.json" <<'JSON'
-{"gain": 1.0, "msd.period": 0.02, "msd.zeta": 0.2, "thermal_drift.k": 0.3, "thermal_drift.tau": 1.5}
 JSON
 
 # At its neutral value the effect leaves the model's output exactly unchanged.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs hystbench into a temporary prefix, builds the example plugin in
 # examples/ against that installed copy with find_package(hystbench), and
-# runs it through `--plugin` with the installed command.
+# runs it through `--plugin` with the installed command; then builds it
+# against the build tree (-Dhystbench_DIR) and lists it with that command.
 set -euo pipefail
 build_dir=$1
 source_dir=$2
@@ -35,4 +36,12 @@ JSON
 "$hystbench" run --plugin "$plugin" "$work/experiment.json" --out "$work/results" >/dev/null
 grep -q '"name": "random_search"' "$work/results/summary.json"
 grep -q '"evaluations": 640' "$work/results/summary.json"
-echo "out-of-tree plugin built against the installed package and run: ok"
+# The same example builds against the build tree, without installing, and
+# the build tree's command loads it.
+cmake -S "$source_dir/examples/random_search_plugin" -B "$work/plugin_from_build" \
+      -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build_dir" -DCMAKE_CXX_COMPILER="$core_compiler" \
+      -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
+cmake --build "$work/plugin_from_build" >/dev/null
+"$build_dir/hystbench" list --plugin "$work/plugin_from_build/random_search.so" > "$work/list_from_build.txt"
+grep -q "random_search - uniform random sampling" "$work/list_from_build.txt"
+echo "out-of-tree plugin built against the installed package and the build tree, and run: ok"

@@ -16,6 +16,12 @@ Action add_plugin_option(CLI::App& command);
 // against (`run` and `report` share it).
 void add_reference_option(CLI::App& command, std::string& reference);
 
+// "unknown command 'discovr'; did you mean 'discover'? ..." when the first
+// argument is neither an option nor a command of `app`, "no command given ..."
+// when there is none, else "". CLI11 would only say that an argument was not
+// expected, or that a subcommand is required.
+std::string unknown_command(const CLI::App& app, int argc, char** argv);
+
 Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
 Action add_simulate_command(CLI::App& app);

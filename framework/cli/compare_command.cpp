@@ -1,13 +1,17 @@
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
+#include "framework/cli/number_range.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
+#include "framework/discovery/noise_floor.hpp"
 
 namespace hystbench::cli {
 namespace {
@@ -43,18 +47,32 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
   return prepare_model_data(m, fit.scales, holdout);
 }
 
+double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+
 void print_headline(const nlohmann::json& metrics, const std::string& unit) {
   // Without a hold-out every sample is an estimation sample: "all" says it.
   const bool parts = metrics.contains("heldout");
   for (const char* part : {"estimation", "heldout", "all"}) {
     if (!metrics.contains(part) || (!parts && std::string(part) != "all")) continue;
     const auto& m = metrics[part];
-    std::cout << "  " << part << ": RMSE " << m["rmse"].dump() << " " << unit << ", fit "
-              << m["fit_percent"].dump() << " %, n " << m["n"].dump() << "\n";
+    // fit % divides by the spread of y about its mean.
+    const std::string fit = m["fit_percent"].is_number()
+                                ? "fit " + quantity(number(m["fit_percent"]), "%")
+                                : "fit % not defined (y is constant)";
+    std::cout << "  " << part << ": RMSE " << quantity(number(m["rmse"]), unit) << ", " << fit
+              << ", " << m["n"].dump() << " samples\n";
   }
-  if (metrics.contains("noise_floor"))
-    std::cout << "  estimated noise sigma " << metrics["noise_floor"]["sigma"].dump() << " " << unit
-              << "\n";
+  if (!metrics.contains("noise_floor")) return;
+  const auto& floor = metrics["noise_floor"];
+  if (floor["sigma"].is_number()) {
+    std::cout << "  estimated noise sigma " << quantity(number(floor["sigma"]), unit);
+    if (floor["rmse_over_sigma"].is_number())
+      std::cout << " (RMSE / sigma " << quantity(number(floor["rmse_over_sigma"]), "") << ")";
+    std::cout << "\n";
+  } else {
+    std::cout << "  noise sigma not estimated (fewer than " << kNoiseFloorFewestSamples
+              << " samples)\n";
+  }
 }
 
 void compare(const CompareOptions& o, const CLI::App& cmd) {
@@ -94,7 +112,7 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("--periodic", o->periods,
                   "the data are one period of a periodic input: simulate this many periods from "
                   "rest and score the last (steady state)")
-      ->capture_default_str()->check(CLI::Range(1, 1000));
+      ->capture_default_str()->check(number_range(1, 1000, "give 1 to 1000 periods"));
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, cmd, load_plugins] {

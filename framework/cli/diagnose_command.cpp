@@ -33,8 +33,9 @@ void print_diagnosis(const Diagnosis& d, const std::string& unit) {
   if (const Candidate* w = d.winner()) std::cout << w->evidence << "\n";
 }
 
-void run_diagnose(DiagnoseCommandOptions& o) {
-  if (o.model.empty() == o.from_fit.empty())
+void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
+  // Counted, not tested for text: `--model ""` is a mistake to report, not a missing option.
+  if ((cmd.count("--model") > 0) == (cmd.count("--fit") > 0))
     throw InputError("diagnose: give either --model LIST (fit it first) or --fit FIT.json");
   DataSource source = o.data.source();
   const Measurement m = source.load();
@@ -45,13 +46,14 @@ void run_diagnose(DiagnoseCommandOptions& o) {
   // Either a fit to start from (its scales, so its parameters keep their
   // meaning) or a model to fit first.
   std::optional<FitRecord> start;
-  if (!o.from_fit.empty()) start = FitRecord::read(o.from_fit);
+  if (cmd.count("--fit")) start = FitRecord::read(o.from_fit);
   Model model = start ? start->model : Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
+  const ModelData data =
+      prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
   const auto dir = o.output.prepare("diagnosis.json");
   options.fit.status = [&](const std::string& s) { status.show("diagnose " + model.text() + ": " + s); };
 
-  const ModelData data = prepare_model_data(m, start ? start->scales : SignalScales::of(m), holdout);
   const Eigen::VectorXd x = start ? start->x : fit_model(model, data, options.fit).x;
   const Diagnosis d = diagnose(model, x, data, options);
   status.finish();
@@ -77,9 +79,9 @@ Action add_diagnose_command(CLI::App& app) {
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);
-  return [o, load_plugins] {
+  return [o, cmd, load_plugins] {
     load_plugins();
-    run_diagnose(*o);
+    run_diagnose(*o, *cmd);
   };
 }
 

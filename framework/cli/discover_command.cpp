@@ -6,6 +6,7 @@
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
+#include "framework/cli/number_range.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/ladder_report.hpp"
 #include "framework/harness/progress.hpp"
@@ -47,9 +48,9 @@ void run_discover(DiscoverCommandOptions& o) {
   DataSource source = o.data.source();
   const Measurement m = source.load();
   const HoldoutSpec holdout = o.data.holdout_spec();
-  const ModelData data = prepare_model_data(m, SignalScales::of(m), holdout);
   Model start = Model::parse(o.start, "--start");
   start.set_substeps(o.fit.substeps);
+  const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, start);
   DiscoverOptions options;
   options.diagnose = o.diagnose.diagnose_options(o.fit.fit_options(), source);
   options.max_steps = o.max_steps;
@@ -106,10 +107,10 @@ Action add_discover_command(CLI::App& app) {
   cmd->add_option("--start", o->start, "effects of the start model (\"none\": the gain alone)")
       ->capture_default_str();
   cmd->add_option("--max-steps", o->max_steps, "effects added at most")
-      ->capture_default_str()->check(CLI::Range(0, 50));
+      ->capture_default_str()->check(number_range(0, 50, "give 0 to 50 steps"));
   cmd->add_option("--refit-restarts", o->refit_restarts,
                   "global restarts of each extended model that compete with its warm refit")
-      ->capture_default_str()->check(CLI::Range(0, 100));
+      ->capture_default_str()->check(number_range(0, 100, "give 0 to 100 restarts"));
   cmd->add_flag("--resume", o->resume,
                 "continue the stopped run in --out from its last finished step (checkpoint.json), "
                 "with the same data and options");

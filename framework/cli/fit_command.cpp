@@ -24,10 +24,9 @@ void fit(FitCommandOptions& o) {
   DataSource source = o.data.source();
   const Measurement m = source.load();
   const HoldoutSpec holdout = o.data.holdout_spec();
-  const SignalScales scales = SignalScales::of(m);
-  const ModelData data = prepare_model_data(m, scales, holdout);
   Model model = Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
+  const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, model);
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
 

@@ -3,7 +3,14 @@
 #include <iomanip>
 #include <iostream>
 
+#include "framework/report/table_format.hpp"
+
 namespace hystbench::cli {
+
+std::string quantity(double x, const std::string& unit) {
+  const std::string number = table::format_fitness(x, table::Format::Markdown);
+  return unit.empty() ? number : number + " " + unit;
+}
 
 void print_parameters(const FitRecord& r) {
   std::cout << "model " << r.model.text() << "\n";

@@ -7,6 +7,10 @@
 
 namespace hystbench::cli {
 
+// A number as printed for people: four significant digits, then the unit
+// (files keep every digit).
+std::string quantity(double x, const std::string& unit);
+
 // The model and one line per parameter: name, physical value, unit.
 void print_parameters(const FitRecord& r);
 // RMSE on the estimation and held-out samples.

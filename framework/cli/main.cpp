@@ -1,5 +1,6 @@
 // hystbench: benchmark optimizers on hysteresis-model identification.
 #include <iostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -12,6 +13,10 @@ int main(int argc, char** argv) {
   CLI::App app{"hystbench: benchmark optimizers on the identification of hysteresis models "
                "(piezoelectric / MFC actuators) over repeated seeded trials"};
   app.require_subcommand(1);
+  // One line, like the errors of the commands themselves.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "hystbench: error: " + std::string(e.what()) + "\n";
+  });
 #ifdef HYSTBENCH_WITH_MPI
   app.set_version_flag("--version", HYSTBENCH_VERSION " (with MPI)");
 #else
@@ -30,6 +35,12 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // Every rank parsed the same command line; rank 0 alone says so.
+    const std::string unknown = hystbench::cli::unknown_command(app, argc, argv);
+    if (!unknown.empty()) {
+      if (hystbench::cluster::is_coordinator())
+        std::cerr << "hystbench: error: " << unknown << "\n";
+      return 2;
+    }
     const int code = hystbench::cluster::is_coordinator() ? app.exit(e) : e.get_exit_code();
     return code == 0 ? 0 : 2;  // bad command line is bad input
   }

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include "framework/cli/number_range.hpp"
 #include "framework/core/error.hpp"
 
 namespace hystbench::cli {
@@ -54,20 +55,23 @@ void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
       ->capture_default_str();
   cmd->add_option("--evaluations", o.fit.evaluations,
                   "global evaluations per restart (0: 2500 per parameter, at least 10000)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()
+      ->check(number_range(0, kUnbounded, "give a positive number of evaluations (0 = default)"));
   cmd->add_option("--restarts", o.fit.restarts, "seeded global restarts")
-      ->capture_default_str()->check(CLI::Range(0, 1000));
+      ->capture_default_str()->check(number_range(0, 1000, "give 0 to 1000 restarts"));
   cmd->add_option("--local", o.fit.local, "NLopt local method of the polish")->capture_default_str();
   cmd->add_option("--local-evaluations", o.fit.local_evaluations,
                   "polish evaluations per start (0: 300 per parameter, at least 1000)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()
+      ->check(number_range(0, kUnbounded,
+                           "give a positive number of polish evaluations (0 = default)"));
   cmd->add_option("--seed", o.fit.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--threads", o.threads,
                   "worker threads (0: one per core); the results do not depend on it")
-      ->capture_default_str()->check(CLI::Range(0, 4096));
+      ->capture_default_str()->check(number_range(0, 4096, "give 0 (one per core) to 4096 threads"));
   cmd->add_option("--substeps", o.substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
-      ->capture_default_str()->check(CLI::Range(0, 1000));
+      ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
 }
 
 DiagnoseOptions DiagnoseCliOptions::diagnose_options(FitOptions fit, const DataSource& source) const {
@@ -90,13 +94,15 @@ void add_diagnose_options(CLI::App* cmd, DiagnoseCliOptions& o) {
                   "effects to try, comma-separated (default: every effect not in the model)");
   cmd->add_option("--bic-threshold", o.bic_threshold,
                   "a candidate is significant when its BIC change is at or below this")
-      ->capture_default_str()->check(CLI::Range(-1e9, 0.0));
+      ->capture_default_str()
+      ->check(number_range(-kUnbounded, 0.0,
+                           "give a BIC change of 0 or below (lower is stricter)"));
   cmd->add_option("--heldout-gain", o.heldout_gain,
                   "... and its held-out RMSE falls by at least this fraction")
-      ->capture_default_str()->check(CLI::Range(0.0, 0.99));
+      ->capture_default_str()->check(number_range(0.0, 0.99, "give a fraction from 0 to 0.99"));
   cmd->add_option("--candidate-restarts", o.candidate_restarts,
                   "global restarts of each extended model besides its warm refit")
-      ->capture_default_str()->check(CLI::Range(0, 100));
+      ->capture_default_str()->check(number_range(0, 100, "give 0 to 100 restarts"));
 }
 
 std::filesystem::path OutputOptions::prepare(const std::string& marker) const {

@@ -10,6 +10,7 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/interrupt_guard.hpp"
+#include "framework/cli/number_range.hpp"
 #include "framework/cli/output_folder.hpp"
 #include "framework/cluster/cluster.hpp"
 #include "framework/core/error.hpp"
@@ -210,10 +211,11 @@ Action add_run_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads,
                   "threads: trials in parallel, or, with fewer trials than threads, the "
                   "candidates of each evaluation (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(number_range(1, 1024, "give 1 to 1024 threads"));
   cmd->add_option("--trials", o->trials, "override the experiment's number of trials")
-      ->check(CLI::Range(1L, 1000000L));
-  cmd->add_option("--seed", o->seed, "override the experiment's seed")->check(CLI::NonNegativeNumber);
+      ->check(number_range(1, 1000000, "give 1 to 1000000 trials"));
+  cmd->add_option("--seed", o->seed, "override the experiment's seed")
+      ->check(number_range(0, kUnbounded, "give a seed of 0 or more"));
   cmd->add_option("--data", o->data,
                   "run the experiment on this data file instead of the one it names (e.g. the "
                   "same algorithms on several data sets, ranked with `hystbench rank`)");

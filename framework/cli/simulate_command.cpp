@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/number_range.hpp"
 #include "framework/core/error.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
@@ -89,11 +90,12 @@ Action add_simulate_command(CLI::App& app) {
                   "the Hammerstein seed model");
   cmd->add_option("--substeps", o->substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
-      ->capture_default_str()->check(CLI::Range(0, 1000));
+      ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
   cmd->add_option("--excitation", o->excitation, "JSON excitation spec (sine / sweep / steps segments)")
       ->required();
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")
-      ->capture_default_str()->check(CLI::Range(0.0, 10.0));
+      ->capture_default_str()
+      ->check(number_range(0.0, 10.0, "give a fraction of the output RMS from 0 to 10"));
   cmd->add_option("--seed", o->seed, "noise seed")->capture_default_str();
   cmd->add_option("--form", o->form, "Bouc-Wen form")->capture_default_str()
       ->check(CLI::IsMember({"increment", "paper"}));

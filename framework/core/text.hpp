@@ -17,4 +17,9 @@ std::string number_text(double v);
 std::size_t index_of_name(const std::vector<std::string>& names, const std::string& name,
                           const std::string& what);
 
+// The name in `names` that `typed` most likely misspells (one edit away, or
+// two for names longer than four letters; a swap of neighbours is one edit),
+// or "" when none is that close. For "did you mean" in messages.
+std::string closest_name(const std::vector<std::string>& names, const std::string& typed);
+
 }  // namespace hystbench

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "framework/discovery/comparison_figures.hpp"
+#include "framework/discovery/noise_floor.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 
@@ -113,7 +114,7 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
         "lowest over orders 2–6 (order " +
         num(f["order"]) + ")";
   else
-    how = "not estimated (too few samples)";
+    how = "not estimated (fewer than " + std::to_string(kNoiseFloorFewestSamples) + " samples)";
   std::string out =
       "## Noise floor\n\nσ = " + with_unit(num(f["sigma"]), in.y_unit) + ", " + how + ".\n\n";
   const double r = value(f["rmse_over_sigma"]);

@@ -5,6 +5,7 @@
 
 #include "framework/io/measurement.hpp"
 #include "framework/model/holdout.hpp"
+#include "framework/model/model.hpp"
 #include "framework/model/model_data.hpp"
 
 namespace hystbench {
@@ -24,5 +25,17 @@ struct DataSource {
 // Normalised by `scales`, with `holdout` marked.
 ModelData prepare_model_data(const Measurement& m, const SignalScales& scales,
                              const HoldoutSpec& holdout);
+
+// A fit needs this many estimation samples per parameter of its model, and
+// never fewer than kFewestFitSamples: with fewer, the parameters follow the
+// noise and nothing they say about the actuator can be trusted.
+constexpr Eigen::Index kSamplesPerParameter = 10;
+constexpr Eigen::Index kFewestFitSamples = 20;
+Eigen::Index samples_needed(const Model& model);
+
+// prepare_model_data() for fitting `model`: throws InputError naming the file
+// and the rule when the estimation samples are too few for its parameters.
+ModelData prepare_fit_data(const Measurement& m, const SignalScales& scales,
+                           const HoldoutSpec& holdout, const Model& model);
 
 }  // namespace hystbench

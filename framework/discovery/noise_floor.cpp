@@ -114,7 +114,8 @@ double binomial(int n, int k) {
 NoiseFloor difference_noise_floor(const Eigen::VectorXd& y) {
   NoiseFloor f{kNaN, "none", 0, 0, 0};
   constexpr int kMaxOrder = 6;
-  if (y.size() < kMaxOrder + 2) return f;
+  static_assert(kNoiseFloorFewestSamples == kMaxOrder + 2);
+  if (y.size() < kNoiseFloorFewestSamples) return f;
   f.method = "difference_mad";
   f.sigma = std::numeric_limits<double>::infinity();
   for (int m = 2; m <= kMaxOrder; ++m) {

@@ -24,6 +24,10 @@
 
 namespace hystbench {
 
+// Fewest samples of an estimate (differences up to order 6 need 8); with
+// fewer the method is "none".
+constexpr Eigen::Index kNoiseFloorFewestSamples = 8;
+
 struct NoiseFloor {
   double sigma = 0;
   std::string method;       // "periodic", "difference_mad" or "none"

@@ -21,6 +21,9 @@ constexpr const char* kRoleList = "t, u, y, segment";
 // Squares of larger values, summed over a record, overflow a double.
 constexpr double kLargestValue = 1e150;
 constexpr const char* kColumnsHint = "--columns t=t_s,u=u_N,y=y_m";
+// Files saved where the decimal separator is a comma: what they are and how to fix them.
+constexpr const char* kCommaSeparatedPoints =
+    "hystbench reads comma-separated files with decimal points (1.5, not 1,5)";
 
 // Where a problem is. Messages are only built when one occurs, so reading a
 // long file costs nothing for it.
@@ -159,6 +162,19 @@ void split_csv_line(std::string_view line, std::vector<std::string>& fields, con
   fields.resize(count);
 }
 
+// "1,5" or "-0,25": digits on both sides of one comma, as written in a
+// locale with decimal commas.
+bool decimal_comma(std::string_view field) {
+  if (!field.empty() && (field[0] == '-' || field[0] == '+')) field.remove_prefix(1);
+  const auto comma = field.find(',');
+  const auto digits = [](std::string_view s) {
+    return !s.empty() &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  return comma != std::string_view::npos && digits(field.substr(0, comma)) &&
+         digits(field.substr(comma + 1));
+}
+
 double parse_number(std::string_view field, const Location& at, const std::string& column) {
   if (field.empty()) fail(at, column, "the value is empty; every row needs a number here");
   std::string_view digits = field;
@@ -169,8 +185,12 @@ double parse_number(std::string_view field, const Location& at, const std::strin
   const std::string quoted = "'" + std::string(field) + "'";
   if (ec == std::errc::result_out_of_range)
     fail(at, column, quoted + " is out of the range of a double; rescale the column (other units)");
-  if (ec != std::errc{} || end != digits.data() + digits.size())
+  if (ec != std::errc{} || end != digits.data() + digits.size()) {
+    if (decimal_comma(field))
+      fail(at, column, quoted + " is not a number: it seems to be written with a decimal comma; " +
+                           kCommaSeparatedPoints + ". Write the numbers with '.' instead");
     fail(at, column, quoted + " is not a number; fix the value or comment the line out with '#'");
+  }
   if (!std::isfinite(value))
     fail(at, column,
          quoted + " is not a finite number (NaN and Inf are not allowed); fix or remove the row");
@@ -231,6 +251,11 @@ Header read_header(LineReader& reader, std::vector<std::string>& fields, const C
                  "a header such as t,u,y and one row per sample");
   const Location at{file, reader.line_number()};
   split_csv_line(*line, fields, at);
+  // Before the column checks, which would blame the names: the whole header is one name.
+  if (fields.size() == 1 && fields[0].find(';') != std::string::npos)
+    fail(at, "the header '" + fields[0] + "' seems to use ';' as the delimiter; " +
+                 kCommaSeparatedPoints + ". Save the file as comma-separated with '.' in numbers, " +
+                 "or convert it, e.g. sed 's/,/./g; s/;/,/g'");
   check_unique(fields, at);
   Header h;
   h.names = fields;
@@ -249,8 +274,22 @@ struct Rows {
   int time_digits = 0;
 };
 
+// A row split into too many fields without a single decimal point: its
+// numbers were most likely written with decimal commas ("0,001,1,5" for
+// 0.001, 1.5).
+bool split_decimal_commas(const std::vector<std::string>& fields, const Header& h) {
+  return fields.size() > h.names.size() &&
+         std::none_of(fields.begin(), fields.end(),
+                      [](const std::string& f) { return f.find('.') != std::string::npos; });
+}
+
 void read_row(const std::vector<std::string>& fields, const Header& h, const Location& at,
               Rows& rows) {
+  if (split_decimal_commas(fields, h))
+    fail(at, "the row has " + std::to_string(fields.size()) + " fields but the header (line " +
+                 std::to_string(h.line) + ") has " + std::to_string(h.names.size()) +
+                 ", and no decimal point: the file seems to use decimal commas; " +
+                 kCommaSeparatedPoints + ". Write the numbers with '.' instead");
   if (fields.size() != h.names.size())
     fail(at, "the row has " + std::to_string(fields.size()) + " fields but the header (line " +
                  std::to_string(h.line) + ") has " + std::to_string(h.names.size()) +

@@ -59,6 +59,11 @@ Model Model::parse(const std::string& list, const std::string& where) {
       item += list[i];
     }
   }
+  // An empty list is more often a shell variable that came out empty than a
+  // wish for the gain alone, so the gain alone has to be asked for by name.
+  if (names.empty())
+    throw InputError(where + ": the effect list is empty; write none for the gain alone, or "
+                             "effects such as hysteresis,msd (`hystbench list effects` lists them)");
   if (names.size() == 1 && names[0] == "none") names.clear();
   return Model(names, where);
 }

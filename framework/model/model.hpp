@@ -19,7 +19,8 @@ class Model {
   // given). Throws InputError for an unknown or repeated name, naming the
   // catalog.
   explicit Model(const std::vector<std::string>& effects, const std::string& where = "model");
-  // "hysteresis,asymmetry,msd,arx"; "" or "none" is the gain alone.
+  // "hysteresis,asymmetry,msd,arx"; "none" is the gain alone. Throws
+  // InputError naming `where` for an empty list.
   static Model parse(const std::string& list, const std::string& where = "--model");
 
   const std::vector<std::string>& effects() const { return names_; }
