@@ -93,7 +93,7 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
                           c.after.rmse_heldout <= (1.0 - o.heldout_gain) * current.errors.rmse_heldout;
   c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
-                                 current.where.value("signatures", nlohmann::json::object()),
+                                 signature_in(current.where, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   return c;
 }
