@@ -368,6 +368,9 @@ TEST(EffectCatalog, NeutralIsInsideBoundsAndEveryFieldIsDocumented) {
     EXPECT_FALSE(info->summary.empty());
     EXPECT_FALSE(info->citation.empty());
     EXPECT_FALSE(info->signature.empty());
+    EXPECT_FALSE(info->statistic.name.empty());
+    EXPECT_TRUE(info->statistic.compute);
+    EXPECT_NE(info->statistic.sentence.find("{value}"), std::string::npos);
     EXPECT_FALSE(info->params.empty());
     for (const auto& p : info->params) {
       SCOPED_TRACE(p.name);

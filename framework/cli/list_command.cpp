@@ -39,6 +39,8 @@ void print_effects() {
                 << p.doc << "\n";
     if (!info->extends.empty()) std::cout << "    Replaces: " << info->extends << "\n";
     std::cout << "    Signature: " << info->signature << "\n";
+    if (!info->statistic.name.empty())
+      std::cout << "    Statistic: " << info->statistic.name << "\n";
     if (!info->citation.empty()) std::cout << "    Citation: " << info->citation << "\n";
   }
 }

@@ -31,30 +31,6 @@ nlohmann::json group(const BreakdownInput& in, const Rows& rows, nlohmann::json 
 
 }  // namespace
 
-std::vector<int> branches(const Eigen::VectorXd& u) {
-  const Eigen::Index n = u.size();
-  std::vector<int> out(std::size_t(n), 0);
-  if (n < 2) return out;
-  const Eigen::VectorXd du = u.tail(n - 1) - u.head(n - 1);
-  const double tol = kHoldingTolerance * du.cwiseAbs().maxCoeff();
-  for (Eigen::Index k = 1; k < n; ++k)
-    out[std::size_t(k)] = du[k - 1] > tol ? 1 : (du[k - 1] < -tol ? -1 : 0);
-  out[0] = out[1];
-  return out;
-}
-
-std::vector<int> amplitude_bins(const Eigen::VectorXd& u, std::vector<double>& edges) {
-  const Eigen::ArrayXd a = (u.array() - (u.size() ? u.mean() : 0.0)).abs();
-  const double top = a.size() ? a.maxCoeff() : 0.0;
-  edges.clear();
-  for (int b = 0; b <= kAmplitudeBins; ++b) edges.push_back(top * b / kAmplitudeBins);
-  std::vector<int> bin(std::size_t(u.size()), 0);
-  if (!(top > 0)) return bin;
-  for (Eigen::Index i = 0; i < a.size(); ++i)
-    bin[std::size_t(i)] = std::min(kAmplitudeBins - 1, int(a[i] / top * kAmplitudeBins));
-  return bin;
-}
-
 nlohmann::json by_segment(const BreakdownInput& in) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& label : distinct_labels(in.segment)) {

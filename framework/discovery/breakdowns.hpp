@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "framework/model/regressors.hpp"  // branches, amplitude_bins
+
 namespace hystbench {
 
-constexpr int kAmplitudeBins = 5;
 constexpr int kTimeWindows = 10;
-constexpr double kHoldingTolerance = 1e-3;  // of max |Δu|
 
 struct BreakdownInput {
   const Eigen::VectorXd& t;
@@ -38,11 +38,5 @@ nlohmann::json by_segment(const BreakdownInput& in);
 nlohmann::json by_amplitude(const BreakdownInput& in);
 nlohmann::json by_branch(const BreakdownInput& in);
 nlohmann::json by_time(const BreakdownInput& in);
-
-// Branch of every sample: +1 loading, −1 unloading, 0 holding.
-std::vector<int> branches(const Eigen::VectorXd& u);
-// Amplitude bin (0..kAmplitudeBins−1) of every sample, and the bin edges
-// of |u − mean(u)| (kAmplitudeBins + 1 values).
-std::vector<int> amplitude_bins(const Eigen::VectorXd& u, std::vector<double>& edges);
 
 }  // namespace hystbench

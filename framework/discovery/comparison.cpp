@@ -4,10 +4,11 @@
 #include <stdexcept>
 
 #include "framework/discovery/breakdowns.hpp"
+#include "framework/discovery/effect_signatures.hpp"
 #include "framework/discovery/error_metrics.hpp"
+#include "framework/discovery/excitation_frequency.hpp"
 #include "framework/discovery/noise_floor.hpp"
-#include "framework/discovery/residual_correlation.hpp"
-#include "framework/discovery/residual_statistics.hpp"
+#include "framework/stats/residual_correlation.hpp"
 
 namespace hystbench {
 namespace {
@@ -129,10 +130,13 @@ nlohmann::json compare_signals(const ComparisonInput& in) {
   const Eigen::VectorXd e = in.y - in.y_model;
   const Correlation acf = autocorrelation(e, kCorrelationLags);
   const Correlation ccf = cross_correlation(in.u, e, kCorrelationLags);
+  const double f_low = lowest_excitation_frequency(in.u, in.segment, ts);
   out["residual"] = residual_json(in.u, e, acf, ccf);
+  out["residual"]["lowest_excitation_hz"] = finite_or_null(f_low);
   out["noise_floor"] = noise_json(estimate_noise_floor(in.u, in.y, in.segment), out["all"],
                                   out.contains("heldout") ? out["heldout"] : nlohmann::json());
-  out["signatures"] = residual_signatures({in.t, in.u, in.y_model, e, in.segment, ts, ccf});
+  out["signatures"] =
+      to_json(effect_signatures({in.t, in.u, in.y_model, e, in.segment, ts, ccf, f_low}));
   return out;
 }
 

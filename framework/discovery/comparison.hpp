@@ -34,11 +34,14 @@ struct ComparisonInput {
 //               "input_lag1_autocorrelation": r_uu(1); near 1 the input is smooth
 //               and r_ue spreads over many lags, so peak_lag is no delay estimate},
 //      "ljung_box": {"lags": h = min(20, N/5), "q", "p_value"},
-//      "white": p_value > 0.01}
-//     (residual_correlation.hpp: conventions, τ > 0 = residual vs past input)
+//      "white": p_value > 0.01,
+//      "lowest_excitation_hz": lowest zero-crossing frequency of u over the segment
+//                              runs (excitation_frequency.hpp)}
+//     (stats/residual_correlation.hpp: conventions, τ > 0 = residual vs past input)
 //  "noise_floor": {"sigma", "method", "rmse_over_sigma", "pairs", "period", "order"
 //                  [, "heldout_rmse_over_sigma"]}   (noise_floor.hpp)
-//  "signatures": named statistics pointing at missing effects (residual_statistics.hpp)
+//  "signatures": every registered effect's own residual statistic, keyed by effect:
+//                {"statistic", "value", "sentence", "details"} (effect_signatures.hpp)
 //
 // Throws std::invalid_argument when the lengths differ.
 nlohmann::json compare_signals(const ComparisonInput& in);

@@ -21,8 +21,6 @@ constexpr double kNearNoiseFloor = 2.0;
 constexpr std::size_t kWorstSegments = 10;
 // r_uu(1) above this: the input is too smooth for the CCF peak lag to mean a delay.
 constexpr double kSmoothInput = 0.9;
-// corr(e, −dŷ/dt) above this is reported as a delay.
-constexpr double kDelayCorrelation = 0.5;
 
 std::string num(const json& j) {
   if (j.is_number_integer()) return std::to_string(j.get<long long>());
@@ -132,16 +130,19 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
   return out + "\n";
 }
 
+// r_ue at lag τ; 0 outside the lags computed.
+double ccf_at(const json& ccf, int tau) {
+  for (std::size_t i = 0; i < ccf["lags"].size(); ++i)
+    if (ccf["lags"][i] == tau) return value(ccf["values"][i]);
+  return 0.0;
+}
+
 // A peak that falls below half its height within three lags on either
 // side: a delay rather than a broad dynamic response.
 bool single_peak(const json& ccf, int lag) {
-  const auto at = [&](int tau) {
-    for (std::size_t i = 0; i < ccf["lags"].size(); ++i)
-      if (ccf["lags"][i] == tau) return std::abs(value(ccf["values"][i]));
-    return 0.0;
-  };
-  const double peak = at(lag);
-  return at(lag - 3) < 0.5 * peak && at(lag + 3) < 0.5 * peak;
+  const double peak = std::abs(ccf_at(ccf, lag));
+  return std::abs(ccf_at(ccf, lag - 3)) < 0.5 * peak &&
+         std::abs(ccf_at(ccf, lag + 3)) < 0.5 * peak;
 }
 
 std::string correlation_verdict(const json& m, double ts) {
@@ -166,7 +167,7 @@ std::string correlation_verdict(const json& m, double ts) {
            " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
   const json& c = m["residual"]["ccf"];
   const int outside = c["outside"], lag = c["peak_lag"];
-  const double peak = value(m["signatures"]["delay_ccf"]);
+  const double peak = ccf_at(c, lag);
   out += "- **Input–residual cross-correlation**: " + std::to_string(outside) + " of " +
          std::to_string(c["lags"].size()) + " lags lie outside the 99 % band ±" + num(c["bound"]) +
          " (about " + num(0.01 * double(c["lags"].size())) +
@@ -195,11 +196,6 @@ std::string correlation_verdict(const json& m, double ts) {
     out +=
         "The residual correlates most with future input: feedback in the data, or a model that "
         "reacts too early.\n";
-  const json& sig = m["signatures"];
-  if (value(sig["delay_correlation"]) > kDelayCorrelation && value(sig["delay_seconds"]) > 0)
-    out += "- **Delay**: the residual follows −dŷ/dt (r = " + num(sig["delay_correlation"]) +
-           "), as a measured output lagging the model by about " + num(sig["delay_seconds"]) +
-           " s would make it.\n";
   return out + "\n";
 }
 
@@ -304,38 +300,20 @@ std::string failure_summary(const ComparisonInput& in, const json& m) {
   return out.empty() ? out : out + "\n";
 }
 
-struct SignatureDoc {
-  const char* key;
-  const char* meaning;
-};
-
-constexpr SignatureDoc kSignatureDocs[] = {
-    {"offset", "mean(e)/std(e): sensor offset"},
-    {"drift", "corr(e, t): sensor drift"},
-    {"asymmetry", "corr(e, u² − mean u²): asymmetric loops"},
-    {"backlash", "corr(e, sign Δu): play / dead band"},
-    {"saturation", "SSE share / sample share of the top amplitude bin: saturation when > 1"},
-    {"creep", "corr(e, slowly lagged u): creep"},
-    {"creep_low_frequency_share", "residual power below the lowest excitation frequency: creep"},
-    {"lowest_excitation_hz", "lowest excitation frequency found [Hz]"},
-    {"dynamics_rate_correlation", "corr(|e|, |Δu|): rate dependence"},
-    {"dynamics_frequency_correlation", "corr(segment RMSE, log frequency): rate dependence"},
-    {"dynamics_rmse_per_hz", "slope of segment RMSE against frequency"},
-    {"dynamics_ccf_max_over_bound", "largest |r_ue(τ)|, τ > 0, in 99 % bands: dynamics when > 1"},
-    {"delay_lag", "lag of the largest |r_ue(τ)| [samples]"},
-    {"delay_ccf", "r_ue at that lag"},
-    {"delay_correlation", "corr(e, −dŷ/dt): time delay"},
-    {"delay_seconds", "least-squares d in e ≈ −d·dŷ/dt [s]"},
-};
-
+// One row per effect, as compare_signals wrote them (effect_signatures.hpp):
+// every registered effect's own statistic of this residual.
 std::string signature_table(const json& m) {
+  const json& signatures = m["signatures"];
+  if (signatures.empty()) return "";
   std::string out =
-      "## Residual signatures\n\nEach number points at one missing effect "
-      "(correlations in [−1, 1]; near 0 means no sign of it).\n\n" +
-      header_row({"statistic", "value", "what it points at"}, true);
-  for (const auto& d : kSignatureDocs)
-    if (m["signatures"].contains(d.key))
-      out += row({std::string("`") + d.key + "`", num(m["signatures"][d.key]), cell(d.meaning)});
+      "## Residual signatures\n\nEvery registered effect's own statistic of this residual, as "
+      "declared in its effect file: how strongly the residual shows what that effect would "
+      "explain. Each falls towards its no-sign value (0 for a correlation or R², about 1 for a "
+      "ratio to chance) as the residual becomes white.\n\n" +
+      row({"effect", "statistic", "value", "here"}) + "| :-- | :-- | --: | :-- |\n";
+  for (auto it = signatures.begin(); it != signatures.end(); ++it)
+    out += row({"`" + it.key() + "`", cell(it->value("statistic", "")), num((*it)["value"]),
+                cell(it->value("sentence", ""))});
   return out + "\n";
 }
 

@@ -97,7 +97,7 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
   c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
   c.check = check_model(extended, r.x, data, o.u_unit, o.y_unit);
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
-                                 current.where.value("signatures", nlohmann::json::object()),
+                                 signature_in(current.where, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   // A dynamics effect fitted onto a resonance the model already has only
   // re-describes that mode; it is shown but never the verdict.

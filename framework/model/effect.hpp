@@ -9,7 +9,7 @@
 //
 //   class Creep : public hystbench::Effect {
 //    public:
-//     static hystbench::EffectInfo info();   // name, stage, parameters, signature
+//     static hystbench::EffectInfo info();   // name, stage, parameters, signature statistic
 //     bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
 //                Eigen::Ref<Eigen::VectorXd> signal) const override;
 //   };
@@ -27,6 +27,7 @@
 
 #include "framework/core/registry.hpp"
 #include "framework/model/effect_lanes.hpp"
+#include "framework/model/residual_signature.hpp"
 
 namespace hystbench {
 
@@ -93,8 +94,12 @@ struct EffectInfo {
   // Residual signature that points at this effect (DISCOVERY.md §2), as one
   // plain sentence completing "adding <name> helps because ...".
   std::string signature;
+  // The statistic of the current residual that measures that signature, and
+  // the sentence that cites it (residual_signature.hpp): the evidence for
+  // this effect. Statistics and their helpers: framework/model/regressors.hpp.
+  ResidualSignature statistic = {};
   // Name of an effect this one generalises (e.g. a Bouc-Wen oscillator
-  // generalises "msd"): adding it replaces that effect, carrying over the
+  // generalises msd): adding it replaces that effect, carrying over the
   // parameters of the same name. Empty for most effects.
   std::string extends;
   // Filled in by HYSTBENCH_EFFECT.

@@ -19,9 +19,34 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: the share of the residual that an ARX correction of
+// the model output explains beyond the residual's own past: with
+// A(z) = 1 + a1 z⁻¹ + a2 z⁻², a missing block B(z)/A(z) leaves e = (B/A − 1)·ŷ,
+// that is A·e = (B − A)·ŷ, so
+//   e[k] = −a1·e[k−1] − a2·e[k−2] + c0·ŷ[k] + c1·ŷ[k−1] + c2·ŷ[k−2].
+// The statistic is the partial R² of the ŷ terms given e[k−1], e[k−2]:
+// (SSE of the AR fit − SSE of the ARX fit) / SSE of the AR fit. Conditioning on
+// the residual's own past prewhitens it, so a coloured residual that does not
+// depend on the model output scores about 3/N, as a white one does.
+// (Ljung, System Identification, 1999, §16.6: residual analysis, and §4.2 for
+// the ARX structure.)
+SignatureValue arx_partial_r_squared(const ResidualView& r) {
+  const Eigen::Index n = r.e.size() - 2;
+  if (n < 8) return {};
+  Eigen::MatrixXd X(n, 5);
+  X << r.e.segment(1, n), r.e.head(n), r.y_model.tail(n), r.y_model.segment(1, n),
+      r.y_model.head(n);
+  const Eigen::VectorXd target = r.e.tail(n);
+  const double own_past = regress(target, X.leftCols(2)).r_squared;
+  const double with_output = regress(target, X).r_squared;
+  if (!(own_past < 1)) return {};
+  return {(with_output - own_past) / (1 - own_past), {{"chance", 3.0 / double(n)}}};
+}
 
 class Arx : public Effect {
  public:
@@ -43,6 +68,10 @@ class Arx : public Effect {
     i.signature =
         "the error grows with the excitation frequency and the input-residual cross-correlation "
         "is significant at positive lags";
+    i.statistic = {"partial R² of e on ŷ[k..k−2] given e[k−1..k−2]", arx_partial_r_squared,
+                   "a second-order ARX correction of the model output explains {value} of the "
+                   "residual variance that the residual's own past leaves (about {chance} by "
+                   "chance)"};
     return i;
   }
 

@@ -9,9 +9,18 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: corr(e, u² − mean u²), the u²′ correlation test of
+// Billings & Voon (Int. J. Control 44, 1986) for a missing even nonlinearity:
+// d2·v² is what a model without it leaves behind, and Pearson's r removes the
+// mean. About ±1/√N for a residual independent of the input.
+SignatureValue square_correlation(const ResidualView& r) {
+  return {correlation(r.e, r.u.cwiseAbs2())};
+}
 
 class Asymmetry : public Effect {
  public:
@@ -27,6 +36,8 @@ class Asymmetry : public Effect {
     i.signature =
         "the residual correlates with u² minus its mean, shows a second harmonic under a pure "
         "sine and the loop centre is shifted";
+    i.statistic = {"corr(e, u² − mean u²)", square_correlation,
+                   "the residual correlates with u² − mean(u²) (r = {value})"};
     return i;
   }
 

@@ -10,9 +10,18 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: corr(e, sign(Δu)). A play of half-width r makes the
+// output lag the input by r in the direction of motion, so the residual jumps
+// with the direction at every reversal: a square wave in sign(Δu).
+// (Krasnosel'skii & Pokrovskii 1989, play operator; Ljung 1999 §16.6.)
+SignatureValue direction_correlation(const ResidualView& r) {
+  return {correlation(r.e, direction_of_motion(r.u))};
+}
 
 class Backlash : public Effect {
  public:
@@ -31,6 +40,8 @@ class Backlash : public Effect {
     i.signature =
         "the error sits at the reversal points where du/dt changes sign and the residual "
         "correlates with sign(du/dt)";
+    i.statistic = {"corr(e, sign Δu)", direction_correlation,
+                   "the residual correlates with the direction of motion sign(Δu) (r = {value})"};
     return i;
   }
 

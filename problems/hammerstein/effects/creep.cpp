@@ -17,11 +17,23 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
 
 constexpr std::array<double, 4> kTimeConstants{0.1, 1.0, 10.0, 100.0};  // s
+
+// Signature statistic: corr(e, u_slow), u_slow = u through a first-order lag
+// whose time constant is one period of the lowest excitation frequency. Creep
+// is a slow approach to the level the input was moved to, so the residual
+// follows a slowly filtered input; faster errors (dynamics, hysteresis) are
+// averaged out by the lag. (Jung & Gweon, Rev. Sci. Instrum. 71, 2000.)
+SignatureValue slow_input_correlation(const ResidualView& r) {
+  const double tau = 1.0 / r.lowest_excitation_hz;
+  if (!(tau > 0) || !std::isfinite(tau)) return {};
+  return {correlation(r.e, first_order_lag(r.u, tau, r.sample_time)), {{"tau", tau}}};
+}
 
 class Creep : public Effect {
  public:
@@ -40,6 +52,9 @@ class Creep : public Effect {
     i.signature =
         "the residual drifts slowly and monotonically after level changes, has power below the "
         "lowest excitation frequency and correlates with the low-pass-filtered input";
+    i.statistic = {"corr(e, lagged u)", slow_input_correlation,
+                   "the residual correlates with the input through a first-order lag of {tau} s, "
+                   "one period of the slowest excitation (r = {value})"};
     return i;
   }
 

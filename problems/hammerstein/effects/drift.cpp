@@ -8,9 +8,16 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: corr(e, t). A missing drift c1·t leaves a linear trend
+// in the residual; Pearson's r with time measures how much of the residual it
+// is, and is about ±1/√N for a white residual.
+// (Ljung, System Identification, 2nd ed., 1999, §16.6: residual analysis.)
+SignatureValue time_correlation(const ResidualView& r) { return {correlation(r.e, r.t)}; }
 
 class Drift : public Effect {
  public:
@@ -22,6 +29,8 @@ class Drift : public Effect {
     i.stage = EffectStage::Output;
     i.params = {{"c1", -1.0, 1.0, 0.0, 1, 0, "1/s", "drift rate"}};
     i.signature = "the residual has a linear trend in time that does not depend on the input";
+    i.statistic = {"corr(e, t)", time_correlation,
+                   "the residual correlates with time (r = {value})"};
     return i;
   }
 

@@ -18,9 +18,22 @@
 #include <cmath>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: corr(e, u − play_r(u)), the stop operator of the input
+// at the width r (1/16 .. 1/2 of the input's half range) where it is largest.
+// A missing rate-independent loop leaves a residual that switches with the
+// direction of motion but, unlike backlash's square wave sign(Δu), turns over
+// gradually after each reversal and saturates: the shape of a stop operator,
+// the building block of Prandtl–Ishlinskii hysteresis (Krasnosel'skii &
+// Pokrovskii, Systems with Hysteresis, 1989). About ±1/√N when white.
+SignatureValue input_loop_correlation(const ResidualView& r) {
+  const LoopCorrelation loop = loop_correlation(r.e, r.u);
+  return {loop.correlation, {{"width", loop.width}}};
+}
 
 class Hysteresis : public Effect {
  public:
@@ -41,6 +54,10 @@ class Hysteresis : public Effect {
     i.signature =
         "the residual forms a loop against the input and changes sign with the direction of "
         "motion, so loading and unloading branches are missed in opposite directions";
+    i.statistic = {"corr(e, stop_r(u))", input_loop_correlation,
+                   "the residual correlates with a hysteresis loop driven by the input, the "
+                   "stop operator u − play_r(u) with r = {width} of the input's half range "
+                   "(r = {value})"};
     return i;
   }
 

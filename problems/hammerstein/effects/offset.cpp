@@ -2,9 +2,19 @@
 #include <array>
 
 #include "framework/model/effect.hpp"
+#include "framework/model/regressors.hpp"
 
 namespace hystbench {
 namespace {
+
+// Signature statistic: mean(e) / std(e), the residual mean in residual
+// standard deviations. A missing offset c0 shifts the whole residual by c0,
+// whatever the input; a white zero-mean residual gives about ±1/√N.
+// (Ljung, System Identification, 2nd ed., 1999, §16.6: residual analysis.)
+SignatureValue mean_over_std(const ResidualView& r) {
+  if (r.e.size() < 2) return {};
+  return {r.e.mean() / standard_deviation(r.e)};
+}
 
 class Offset : public Effect {
  public:
@@ -16,6 +26,8 @@ class Offset : public Effect {
     i.params = {{"c0", -5.0, 5.0, 0.0, 1, 0, "", "offset"}};
     i.citation = "DISCOVERY.md §2 (sensor offset and drift y + c0 + c1·t)";
     i.signature = "the residual has a non-zero mean that does not depend on the input";
+    i.statistic = {"mean(e)/std(e)", mean_over_std,
+                   "the residual mean is {value} residual standard deviations"};
     return i;
   }
   bool apply(std::span<const double> p, const SignalContext&,

@@ -1,4 +1,4 @@
-#include "framework/discovery/residual_correlation.hpp"
+#include "framework/stats/residual_correlation.hpp"
 
 #include "framework/stats/distributions.hpp"
 
