@@ -65,5 +65,27 @@ TEST(BoxplotFigure, PowersOfTenOnlyWhenTheValuesSpanADecade) {
   EXPECT_FALSE(contains(narrow, "set format y"));
 }
 
+// Final fitness 1 and 2 per algorithm, reached at evaluation 100.
+std::string ecdf_script(double target) {
+  TempDir dir;
+  ReportContext ctx;
+  ctx.experiment = "t";
+  ctx.trials = 2;
+  auto results = finals(2, 1.0, 2.0);
+  for (auto& trials : results)
+    for (auto& r : trials) r.trace = {{10, 5.0}, {100, r.best}};
+  return read(*write_ecdf_figure(dir.path(), experiment({"A", "B"}), results, target, ctx));
+}
+
+TEST(EcdfFigure, SaysInThePlotWhenNoTrialReachedTheTarget) {
+  const std::string none = ecdf_script(0.5);
+  EXPECT_TRUE(contains(none, "\n# no trial reached the target f ≤ 0.5: every line stays at 0.\n"))
+      << none;
+  EXPECT_TRUE(contains(none, "\nset label 1 \"no trial reached the target f ≤ 0.5\" at graph 0.5, "
+                             "graph 0.5 center front"))
+      << none;
+  EXPECT_FALSE(contains(ecdf_script(1.5), "no trial reached"));
+}
+
 }  // namespace
 }  // namespace hystbench

@@ -318,6 +318,22 @@ TEST(FitFigures, WritesDataAndBothScripts) {
     EXPECT_TRUE(contains(loop_gp, part)) << part << " missing from:\n" << loop_gp;
 }
 
+// A good model must not hide the measurement: the measurement is plotted
+// first as a broad light line, the model thin over it, in both figures.
+TEST(FitFigures, MeasurementIsABroadBandUnderAThinModelLine) {
+  TempDir dir;
+  const FitData d = fit_data();
+  for (const auto& script : write_fit_figures(dir.path(), "de", d.t, d.u, d.y, d.yhat,
+                                              d.segments, sample_context())) {
+    const std::string gp = read(script);
+    const auto measured = gp.find("with lines lw 4 lc rgb \"#b4b4b4\" title \"measured\"");
+    const auto model = gp.find("with lines lw 1 lc rgb \"#0072B2\" title \"model\"");
+    ASSERT_NE(measured, std::string::npos) << gp;
+    ASSERT_NE(model, std::string::npos) << gp;
+    EXPECT_LT(measured, model) << "the model is drawn over the measurement";
+  }
+}
+
 TEST(FitFigures, WithoutSegmentsOnePanelAndNoSegmentColumn) {
   TempDir dir;
   const FitData d = fit_data();

@@ -7,9 +7,12 @@
 #include "framework/report/results_merge.hpp"
 #include "framework/report/stats_tables.hpp"
 #include "framework/report/trial_statistics.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace hystbench {
 namespace {
+
+using test_support::contains;
 
 Experiment experiment(const nlohmann::json& budget) {
   return Experiment::from_json(
@@ -122,6 +125,28 @@ TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
     EXPECT_NE(tex.find(part), std::string::npos) << part << " missing from:\n" << tex;
   EXPECT_EQ(tex.find("A_1"), std::string::npos) << "unescaped underscore";
   EXPECT_EQ(tex.find("|"), std::string::npos) << "booktabs tables have no vertical rules";
+}
+
+// Ten trials each: exact; A against B is complete separation, p = 2 / C(20, 10),
+// doubled by Holm over the two comparisons. Eleven trials each: normal.
+TEST(StatsTables, CaptionSaysWhichRankSumDistributionGaveTheP) {
+  ReportContext ctx;
+  ctx.experiment = "t";
+  const auto ten = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", {});
+  EXPECT_TRUE(ten.rows[1].p_exact);
+  EXPECT_NEAR(ten.rows[1].p_holm / (2 * 2.0 / 184756), 1.0, 1e-12);
+  const std::string rule =
+      " exact (permutation distribution of the rank sum, ties at their mid-ranks) when both "
+      "algorithms have ≤ 10 trials, normal approximation with tie and continuity correction above";
+  EXPECT_TRUE(contains(stats_markdown(ten, ctx), rule + " (here exact throughout); Holm-adjusted."));
+  const std::string tex = stats_latex(ten, ctx);
+  EXPECT_TRUE(contains(tex, "have $\\le$ 10 trials")) << tex;
+
+  const auto eleven = campaign_statistics(experiment({{"evaluations", 100}}),
+                                          {trials(0, 10, 1.0, 11), trials(1, 10, 5.0, 11),
+                                           trials(2, 10, 1.0, 11)}, "", {});
+  EXPECT_FALSE(eleven.rows[1].p_exact);
+  EXPECT_TRUE(contains(stats_markdown(eleven, ctx), "above (here normal throughout); Holm"));
 }
 
 TEST(StatsMarkdown, AColumnWhoseValuesAllTieHasNoBoldCell) {

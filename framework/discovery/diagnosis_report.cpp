@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "framework/discovery/candidates_figure.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/core/text.hpp"
@@ -13,7 +14,6 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/provenance.hpp"
-#include "framework/report/gnuplot_script.hpp"
 #include "framework/report/markdown.hpp"
 
 namespace hystbench {
@@ -173,37 +173,6 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& data_name,
   return "# Diagnosis of `" + d.model.text() + "` on " + data_name + "\n\n" +
          verdict_section(d, unit) + where_section(d, unit, current_report) +
          candidates_section(d, unit);
-}
-
-std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, const Diagnosis& d,
-                                              const std::string& y_unit) {
-  std::ostringstream csv;
-  csv << "effect,rmse_after,heldout_rmse_after\n";
-  for (const auto& c : d.candidates)
-    csv << c.effect << "," << gnuplot::number(c.after.rmse_estimation) << ","
-        << gnuplot::number(c.after.rmse_heldout) << "\n";
-  write_file_atomic(dir / "diagnosis_candidates.csv", csv.str());
-  const double sigma =
-      d.where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
-  const std::string unit = y_unit.empty() ? "" : " [" + y_unit + "]";
-  std::ostringstream body;
-  body << "set datafile separator ','\nset style data histograms\nset xrange [-0.6:*]\n"
-       << "set style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-       << "set xtics rotate by -35 noenhanced\nset key outside top center horizontal\n"
-       << "set grid ytics\nset logscale y\n"
-       << "set ylabel " << gnuplot::quoted("RMSE" + unit) << "\n"
-       << "set title " << gnuplot::quoted("Adding one effect to " + d.model.text()) << " noenhanced\n"
-       << "current = " << gnuplot::number(d.errors.rmse_estimation) << "\n"
-       << "sigma = " << gnuplot::number(sigma) << "\n"
-       << "plot 'diagnosis_candidates.csv' using 2:xtic(1) title 'estimation RMSE after', \\\n"
-       << "     '' using 3 title 'held-out RMSE after', \\\n"
-       << "     current with lines lw 2 dt 2 lc rgb 'black' title 'current model', \\\n"
-       << "     sigma with lines lw 2 dt 3 lc rgb '#808080' title 'noise floor σ'\n";
-  const std::string text =
-      gnuplot::header("diagnosis_candidates", "RMSE after adding each candidate effect",
-                      "diagnosis_candidates.csv") +
-      gnuplot::render_all_terminals("diagnosis_candidates", body.str());
-  return gnuplot::write_script(dir, "diagnosis_candidates", text);
 }
 
 std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& dir,

@@ -1,7 +1,8 @@
 #pragma once
 // Writing a diagnosis out: diagnosis.json, report.md (an answer a researcher
 // can act on: where the model fails, which effect is missing and why we
-// think so, how much adding it helps) and the candidates figure.
+// think so, how much adding it helps) and the candidates figure
+// (candidates_figure.hpp).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,11 +17,6 @@ namespace hystbench {
 // fit's comparison report (linked for the details).
 std::string diagnosis_markdown(const Diagnosis& d, const std::string& data_name,
                                const std::string& y_unit, const std::string& current_report);
-
-// diagnosis_candidates.gp (+ .csv): RMSE after adding each candidate, the
-// current RMSE and the noise floor as lines. Returns the script path.
-std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, const Diagnosis& d,
-                                              const std::string& y_unit);
 
 // Everything a diagnosis leaves in `dir`: diagnosis.json, report.md,
 // fit.json (the current model as diagnosed), extended_fit.json (with the

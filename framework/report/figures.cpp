@@ -24,8 +24,11 @@ namespace {
 // deficiencies and still distinct when printed in grey.
 constexpr std::array<const char*, 7> kPalette{"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                               "#E69F00", "#56B4E9", "#000000"};
-constexpr const char* kModelColour = "#0072B2";
-constexpr const char* kMeasuredColour = "#707070";
+// The measurement is drawn first as a broad light band, the model as a thin
+// dark line over it: a good model runs inside the band instead of hiding
+// it, and where the two part the band shows on its own.
+constexpr const char* kMeasuredStyle = "lw 4 lc rgb \"#b4b4b4\"";
+constexpr const char* kModelStyle = "lw 1 lc rgb \"#0072B2\"";
 constexpr const char* kResidualColour = "#D55E00";
 // More loop panels than this no longer fit a page legibly.
 constexpr std::size_t kMaxLoopPanels = 9;
@@ -352,9 +355,8 @@ std::string time_body(const TimeFigure& f) {
          "  set format x \"\"\n  unset xlabel\n  set ylabel output_label\n" +
          f.output_tics +
          "  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n"
-         "  plot " + data + "3 with lines lw 1 lc rgb \"" + kMeasuredColour +
-         "\" title \"measured\", \\\n       " + data + "4 with lines lw 1.5 lc rgb \"" +
-         kModelColour + "\" title \"model\"\n"
+         "  plot " + data + "3 with lines " + kMeasuredStyle + " title \"measured\", \\\n       " +
+         data + "4 with lines " + kModelStyle + " title \"model\"\n"
          "  unset label\n  unset title\n  unset key\n"
          "  set origin 0, 0\n  set size 1, 0.38\n  set tmargin 0.5\n  set bmargin 3.2\n"
          "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n"
@@ -427,9 +429,10 @@ std::string loops_body(const std::string& dat, const std::string& title) {
          "    # One key for all panels, in one row above the first.\n"
          "    if (i == 1) { set key at screen 0.98, graph 1.02 right bottom vertical maxrows 1 \\\n"
          "                  samplen 2.5 } else { unset key }\n"
-         "    plot " + data + "2 with lines lw 1 lc rgb \"" + kMeasuredColour +
-         "\" title \"measured\", \\\n         " + data + "3 with lines lw 1.5 lc rgb \"" +
-         kModelColour + "\" title \"model\"\n  }\n  unset multiplot\n  unset label\n";
+         "    # Measured first, as a broad light band; the model thin on top of it.\n"
+         "    plot " + data + "2 with lines " + kMeasuredStyle + " title \"measured\", \\\n         " +
+         data + "3 with lines " + kModelStyle + " title \"model\"\n  }\n  unset multiplot\n"
+         "  unset label\n";
 }
 
 // ---- rendering ------------------------------------------------------------

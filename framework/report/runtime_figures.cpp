@@ -87,6 +87,14 @@ std::string ecdf_settings(const ReportContext& ctx, double target) {
          "set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1\n";
 }
 
+// Every line flat at 0 reads like a broken figure; say why instead.
+std::string nobody_reached(double target) {
+  const std::string text = "no trial reached the target f ≤ " + four_digits(target);
+  return "# " + text + ": every line stays at 0.\n"
+         "set label 1 " + gnuplot::quoted(text) +
+         " at graph 0.5, graph 0.5 center front noenhanced font \",14\"\n";
+}
+
 // Final fitness of the trials whose optimizer did not throw.
 std::vector<double> finals(const std::vector<TrialResult>& trials) {
   std::vector<double> out;
@@ -134,12 +142,14 @@ std::optional<fs::path> write_ecdf_figure(const fs::path& dir, const Experiment&
   if (!target) return std::nullopt;
   const long last = last_evaluation(results);
   std::string csv = "label,evaluations,fraction\n", dat;
+  bool reached = false;
   for (std::size_t a = 0; a < results.size(); ++a) {
     const std::string& label = e.algorithms[a].label;
     dat += block_header(a, label, "evaluations fraction");
     for (const auto& s : ecdf_steps(results[a], *target, last)) {
       csv += csv_field(label) + "," + std::to_string(s.evaluations) + "," + csv_number(s.fraction) + "\n";
       dat += std::to_string(s.evaluations) + " " + gnuplot::number(s.fraction) + "\n";
+      reached = reached || s.fraction > 0;
     }
   }
   write_file_atomic(dir / "ecdf.csv", csv);
@@ -149,7 +159,8 @@ std::optional<fs::path> write_ecdf_figure(const fs::path& dir, const Experiment&
                               "function evaluations, one step line per algorithm",
                       "ecdf.dat (ecdf.csv as one index block per algorithm: evaluations "
                       "fraction)") +
-      ecdf_settings(ctx, *target) + gnuplot::render_all_terminals("ecdf", ecdf_plot(e));
+      ecdf_settings(ctx, *target) + (reached ? "" : nobody_reached(*target)) +
+      gnuplot::render_all_terminals("ecdf", ecdf_plot(e));
   return gnuplot::write_script(dir, "ecdf", text);
 }
 

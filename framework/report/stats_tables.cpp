@@ -9,6 +9,7 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
 #include "framework/report/table_format.hpp"
+#include "framework/stats/rank_sum_exact.hpp"
 
 namespace hystbench {
 namespace {
@@ -128,6 +129,26 @@ std::string mark_sentence(const CampaignStatistics& s, Format f) {
          (tex ? "$p_{\\mathrm{Holm}}$" : "p_Holm") + " is the adjusted p-value; counts " + mark_counts(s) + " (+/=/" + minus + ").";
 }
 
+// Where the raw p-values came from: the rule, and which side of it this
+// campaign's comparisons fell on.
+std::string p_value_sentence(const CampaignStatistics& s, Format f) {
+  int exact = 0, normal = 0;
+  for (const auto& r : s.rows)
+    if (!r.reference && !std::isnan(r.p_holm)) (r.p_exact ? exact : normal) += 1;
+  std::string here;
+  if (exact > 0 && normal == 0) here = " (here exact throughout)";
+  if (exact == 0 && normal > 0) here = " (here normal throughout)";
+  if (exact > 0 && normal > 0)
+    here = " (here exact for " + std::to_string(exact) + ", normal for " + std::to_string(normal) +
+           (normal == 1 ? " comparison)" : " comparisons)");
+  const std::string at_most = f == Format::Latex ? "$\\le$ " : "≤ ";
+  return " p: two-sided rank-sum test, exact (permutation distribution of the rank sum, ties at "
+         "their mid-ranks) when both algorithms have " + at_most +
+         std::to_string(stats::kExactRankSumMaxSize) +
+         " trials, normal approximation with tie and continuity correction above" + here +
+         "; Holm-adjusted.";
+}
+
 std::string runtime_sentence(const CampaignStatistics& s, Format f) {
   std::string text;
   if (s.target)
@@ -156,7 +177,8 @@ std::string runtime_sentence(const CampaignStatistics& s, Format f) {
 }
 
 std::string caption(const CampaignStatistics& s, const ReportContext& ctx, Format f) {
-  return run_sentence(ctx, f) + mark_sentence(s, f) + runtime_sentence(s, f);
+  return run_sentence(ctx, f) + mark_sentence(s, f) + p_value_sentence(s, f) +
+         runtime_sentence(s, f);
 }
 
 }  // namespace

@@ -100,7 +100,9 @@ void add_marks(CampaignStatistics& s, const std::vector<std::vector<TrialResult>
     const auto other = finals(results[a]);
     if (a == ref || other.empty() || reference.empty()) continue;
     tested.push_back(a);
-    p.push_back(stats::rank_sum_test(reference, other).p);
+    const auto test = stats::rank_sum_test(reference, other);
+    p.push_back(test.p);
+    row.p_exact = test.exact;
   }
   if (tested.empty()) return;
   const auto h = stats::holm(p, s.alpha);

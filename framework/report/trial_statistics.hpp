@@ -20,6 +20,7 @@ struct AlgorithmStatistics {
   bool reference = false;
   char mark = '=';             // '+', '=' or '-' from the reference's view; ' ' for it
   double p_holm = 1.0;         // NaN for the reference or without a test
+  bool p_exact = false;        // the raw p came from the exact rank-sum distribution
   long trials = 0;             // all trials, failed ones included
   long successes = 0;          // trials that reached the target
   double success_rate = 0.0;   // NaN without a target

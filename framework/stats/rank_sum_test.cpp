@@ -8,6 +8,7 @@
 #include "framework/core/error.hpp"
 #include "framework/stats/descriptive.hpp"
 #include "framework/stats/distributions.hpp"
+#include "framework/stats/rank_sum_exact.hpp"
 #include "framework/stats/ranks.hpp"
 
 namespace hystbench::stats {
@@ -33,9 +34,8 @@ double tie_term(std::vector<double> values) {
   return sum;
 }
 
-double rank_sum_of_first(const std::vector<double>& pooled, std::size_t n1) {
-  const std::vector<double> ranks = average_ranks(pooled);
-  return std::accumulate(ranks.begin(), ranks.begin() + std::ptrdiff_t(n1), 0.0);
+bool use_exact(RankSumMethod method, std::size_t n1, std::size_t n2) {
+  return method == RankSumMethod::Automatic && rank_sum_exact_applies(n1, n2);
 }
 
 bool reference_is_better(const std::vector<double>& reference,
@@ -48,13 +48,17 @@ bool reference_is_better(const std::vector<double>& reference,
 
 }  // namespace
 
-RankSumResult rank_sum_test(const std::vector<double>& first, const std::vector<double>& second) {
+RankSumResult rank_sum_test(const std::vector<double>& first, const std::vector<double>& second,
+                            RankSumMethod method) {
   if (first.empty() || second.empty()) throw InputError("rank-sum test: a sample is empty");
   std::vector<double> pooled = first;
   pooled.insert(pooled.end(), second.begin(), second.end());
   const double n1 = double(first.size()), n2 = double(second.size()), n = n1 + n2;
+  const std::vector<double> ranks = average_ranks(pooled);
   RankSumResult r;
-  r.u = rank_sum_of_first(pooled, first.size()) - n1 * (n1 + 1.0) / 2.0;
+  r.exact = use_exact(method, first.size(), second.size());
+  r.u = std::accumulate(ranks.begin(), ranks.begin() + std::ptrdiff_t(first.size()), 0.0) -
+        n1 * (n1 + 1.0) / 2.0;
   // A single pooled value (n = 1) cannot happen: both samples are non-empty.
   const double ties = tie_term(pooled) / (n * (n - 1.0));
   const double variance = n1 * n2 / 12.0 * ((n + 1.0) - ties);
@@ -64,7 +68,7 @@ RankSumResult rank_sum_test(const std::vector<double>& first, const std::vector<
   const double d = r.u - n1 * n2 / 2.0;
   const double correction = d > 0 ? 0.5 : (d < 0 ? -0.5 : 0.0);
   r.z = (d - correction) / std::sqrt(variance);
-  r.p = normal_two_sided_p(r.z);
+  r.p = r.exact ? rank_sum_exact_p(ranks, first.size()) : normal_two_sided_p(r.z);
   return r;
 }
 

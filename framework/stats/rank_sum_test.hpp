@@ -1,10 +1,12 @@
 #pragma once
-// Two-sided Wilcoxon rank-sum (Mann-Whitney) test with the normal
-// approximation, and Holm's step-down correction for several such tests.
+// Two-sided Wilcoxon rank-sum (Mann-Whitney) test, exact for small samples
+// (rank_sum_exact.hpp: both at most 10 values) and with the normal
+// approximation above, and Holm's step-down correction for several tests.
 //
 // Wilcoxon, Biometrics Bulletin 1(6):80-83, 1945; Mann & Whitney, Ann. Math.
 // Statist. 18(1):50-60, 1947; Holm, Scand. J. Statist. 6(2):65-70, 1979.
-// The formulas are those of R's wilcox.test(exact = FALSE, correct = TRUE):
+// The normal approximation is that of R's wilcox.test(exact = FALSE,
+// correct = TRUE):
 //   U_1   = W_1 - n_1 (n_1 + 1) / 2        (W_1: rank sum of the first sample,
 //                                           ties averaged)
 //   mu_U  = n_1 n_2 / 2
@@ -20,11 +22,18 @@ struct RankSumResult {
   double u = 0.0;         // U_1 of the first sample
   double z = 0.0;         // continuity-corrected; 0 when every value ties
   double p = 1.0;         // two-sided
+  bool exact = false;     // p from the permutation distribution, not from z
   bool all_tied = false;  // sig_U = 0: no evidence either way, p = 1
 };
 
+enum class RankSumMethod {
+  Automatic,  // exact when rank_sum_exact_applies, else normal
+  Normal,     // normal approximation whatever the sizes
+};
+
 // Throws InputError for an empty sample or a NaN value.
-RankSumResult rank_sum_test(const std::vector<double>& first, const std::vector<double>& second);
+RankSumResult rank_sum_test(const std::vector<double>& first, const std::vector<double>& second,
+                            RankSumMethod method = RankSumMethod::Automatic);
 
 // Table mark of a reference algorithm (the proposed one) against a
 // competitor; the character is what the table prints.
