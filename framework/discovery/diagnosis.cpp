@@ -166,7 +166,7 @@ Diagnosis current_fit(const Model& model, const Eigen::VectorXd& x, const ModelD
 struct CandidateProgress {
   std::size_t total;
   std::size_t finished = 0;
-  std::string best_effect;
+  std::string best_effect = {};
   double best_bic = 0;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 

@@ -62,7 +62,7 @@ Diagnosis restored_diagnosis(const nlohmann::json& j, const ModelData& data,
                   j.at("close_call").at("reason").get<std::string>(),
                   j.at("close_call").at("runner_up").get<std::string>()};
   if (const auto& w = j.at("winner"); !w.is_null()) {
-    Candidate c{w.at("effect").get<std::string>(), model_of(w.at("model"), o, where + " winner")};
+    Candidate c{w.at("effect").get<std::string>(), model_of(w.at("model"), o, where + " winner"), {}, {}};
     c.x = vector_of(w.at("x"), c.model, where + " winner x");
     c.after = fit_errors(c.model, c.x, data);
     c.evidence = w.at("evidence").get<std::string>();

@@ -79,7 +79,7 @@ ModelCheck check_model(const Model& model, const Eigen::VectorXd& x, const Model
   ModelCheck c;
   c.parameters = fitted_parameters(model, x, data, u, model.physical_units(u_unit, y_unit));
   for (const auto& effect : model.effects()) {
-    EffectCheck e{effect, true};
+    EffectCheck e{effect, true, {}};
     for (int i : model.parameters_of(effect)) {
       e.neutral = e.neutral && u.available && near_neutral(model.parameter(i), x[i], u.sd[i]);
       if (c.parameters[i].at_bound) e.at_bound.push_back(c.parameters[i].name);
