@@ -140,6 +140,7 @@ std::string where_section(const Diagnosis& d, const std::string& unit,
   out << ".\n\n";
   out << worst_groups(d.where, unit);
   for (const auto& warning : d.check.warnings()) out << "- " << warning << "\n";
+  if (!d.check.warnings().empty()) out << "\n";
   out << "Full breakdowns, residual tests and figures: [" << current_report << "](" << current_report
       << ").\n\n";
   return out.str();

@@ -66,11 +66,12 @@ LadderStep make_step(const Diagnosis& d) {
 
 // Who gets the credit for the rung that adding `w` produced. `fitted`: the
 // extended model before pruning.
-std::string attribution(const Candidate& w, bool added_was_neutral, const Pruned& p,
+std::string attribution(const Candidate& w, bool dropped, const Pruned& p,
                         const FitResult& fitted, double sample_time) {
-  if (added_was_neutral)
-    return w.effect + " stayed at its neutral value in the refit: the error fell because the "
-                      "refit found a better fit of the other effects, not because of " +
+  if (dropped)
+    return w.effect + " stayed at its neutral value in the refit and was dropped again: the "
+                      "error fell because the refit found a better fit of the other effects, not "
+                      "because of " +
            w.effect + (p.removed.empty() ? "" : "; that refit made " + join(p.removed, ", ") +
                                                     " redundant") +
            ".";
@@ -90,15 +91,19 @@ LadderStep next_step(const Ladder& ladder, const ModelData& data, const Discover
   refit.seed = o.diagnose.fit.seed + std::uint64_t(step) + 1;
   const Candidate& w = *ladder.diagnoses.back().winner();
   const FitResult fitted = fit_model(w.model, data, refit, &w.x);
+  // An added effect that looks neutral may be pruned like any other; if BIC
+  // keeps it, it does contribute (its standard errors were only wide).
   const bool neutral =
       check_model(fitted.model, fitted.x, data, o.diagnose.u_unit, o.diagnose.y_unit).neutral(w.effect);
   Pruned p = prune(fitted, neutral ? std::string() : w.effect, data, refit);
   if (!p.removed.empty()) p.fit = fit_model(p.fit.model, data, refit, &p.fit.x);
+  const bool dropped = !p.fit.model.has(w.effect);
+  if (dropped) std::erase(p.removed, w.effect);
   LadderStep s{p.fit.model, p.fit.x, {}};
   s.added = w.effect;
   s.removed = p.removed;
   s.evidence = w.evidence;
-  s.attribution = attribution(w, neutral, p, fitted, data.sample_time);
+  s.attribution = attribution(w, dropped, p, fitted, data.sample_time);
   return s;
 }
 

@@ -32,6 +32,7 @@ nlohmann::json close_call_json(const CloseCall& c) {
 
 std::string step_label(const LadderStep& s) {
   std::string label = s.added.empty() ? "start" : "+" + s.added;
+  if (!s.added.empty() && !s.model.has(s.added)) label += " (dropped)";
   for (const auto& r : s.removed) label += " −" + r;
   return label;
 }
