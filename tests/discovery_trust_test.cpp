@@ -64,7 +64,8 @@ TEST(ParameterUncertainty, MatchesTheClosedFormOfALinearRegression) {
 }
 
 TEST(ParameterUncertainty, AParameterTheDataCannotSeeIsUndetermined) {
-  // Two offsets in series are one: their sum is determined, each alone is not.
+  // A drift with every sample at t = 0 changes nothing: its parameter is
+  // undetermined while the others stay determined.
   ModelData d = linear_data(0.3);
   const Model model = Model::parse("offset,drift");
   Eigen::VectorXd x = model.neutral();

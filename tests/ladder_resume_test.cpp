@@ -8,6 +8,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
+#include "framework/discovery/ladder_report.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
 #include "framework/model/holdout.hpp"
 #include "tests/temp_dir.hpp"
@@ -73,7 +74,12 @@ TEST(LadderResume, StoppedAfterAStepAndResumedGivesTheSameLadder) {
     EXPECT_EQ(resumed.steps[k].added, whole.steps[k].added) << k;
     EXPECT_EQ(resumed.diagnoses[k].verdict, whole.diagnoses[k].verdict) << k;
   }
-  EXPECT_EQ(resumed.completeness().complete, whole.completeness().complete);
+  // Everything ladder.json says, the restored steps' optimum checks and
+  // close calls included.
+  const DataSource source;
+  const HoldoutSpec holdout;
+  const LadderContext ctx{data, source, holdout, std::nullopt, {}};
+  EXPECT_EQ(ladder_json(resumed, ctx).dump(), ladder_json(whole, ctx).dump());
 }
 
 TEST(LadderResume, ACheckpointOfOtherOptionsIsRefusedNamingTheKey) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace hystbench {
@@ -11,6 +12,12 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
   std::string out;
   for (const auto& s : items) out += (out.empty() ? "" : separator) + s;
   return out;
+}
+
+std::string format_number(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
 }
 
 std::string number_text(double v) {

@@ -12,6 +12,10 @@ std::string join(const std::vector<std::string>& items, const std::string& separ
 // 100000 -> "100000".
 std::string number_text(double v);
 
+// One number through a printf format ("%.3g", "%.1f"), for sentences in
+// reports.
+std::string format_number(const char* format, double v);
+
 // Position of `name` in `names`; throws std::invalid_argument naming `what`
 // and the valid names. Used to map option strings to enums.
 std::size_t index_of_name(const std::vector<std::string>& names, const std::string& name,

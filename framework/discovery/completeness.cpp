@@ -1,9 +1,10 @@
 #include "framework/discovery/completeness.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
+#include "framework/core/text.hpp"
+#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/error_metrics.hpp"
 
 namespace hystbench {
@@ -16,11 +17,6 @@ double number(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_number() ? it->get<double>() : kNaN;
 }
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 void worst_segment(const nlohmann::json& where, Completeness& c) {
   double worst = -1;
@@ -32,14 +28,14 @@ void worst_segment(const nlohmann::json& where, Completeness& c) {
 }
 
 std::string statistics_text(const Completeness& c, bool heldout) {
-  std::string s = "RMSE " + fmt("%.3g", c.rmse_over_sigma) + " σ on the estimation data";
-  if (heldout) s += " and " + fmt("%.3g", c.heldout_rmse_over_sigma) + " σ held out";
-  s += " (σ = " + fmt("%.4g", c.sigma) + "), Ljung–Box p = " + fmt("%.3g", c.ljung_box_p) + ", " +
+  std::string s = "RMSE " + format_number("%.3g", c.rmse_over_sigma) + " σ on the estimation data";
+  if (heldout) s += " and " + format_number("%.3g", c.heldout_rmse_over_sigma) + " σ held out";
+  s += " (σ = " + format_number("%.4g", c.sigma) + "), Ljung–Box p = " + format_number("%.3g", c.ljung_box_p) + ", " +
        std::to_string(c.ccf_outside) + " of " + std::to_string(c.ccf_lags) +
        " input–residual cross-correlation lags outside the 99 % band";
   if (!c.worst_segment.empty())
     s += "; the error is largest in segment " + c.worst_segment + " (" +
-         fmt("%.3g", c.worst_segment_rmse_over_sigma) + " σ)";
+         format_number("%.3g", c.worst_segment_rmse_over_sigma) + " σ)";
   return s;
 }
 
@@ -58,6 +54,8 @@ Completeness assess_completeness(const FitErrors& errors, const nlohmann::json& 
   c.rmse_over_sigma = c.sigma > 0 ? errors.rmse_estimation / c.sigma : kNaN;
   c.heldout_rmse_over_sigma = heldout && c.sigma > 0 ? errors.rmse_heldout / c.sigma : kNaN;
   worst_segment(where, c);
+  c.tolerance = tolerance;
+  c.white = c.ljung_box_p > kWhitenessLevel && c.ccf_outside <= kChanceCcfLags;
   if (!(c.sigma > 0)) {
     c.kind = "no_noise_estimate";
     c.reason = "No noise estimate: completeness cannot be judged against the noise floor.";
@@ -65,9 +63,9 @@ Completeness assess_completeness(const FitErrors& errors, const nlohmann::json& 
   }
   const bool at_floor = c.rmse_over_sigma <= tolerance &&
                         (!heldout || c.heldout_rmse_over_sigma <= tolerance);
-  const bool white = c.ljung_box_p > 0.01 && c.ccf_outside <= kChanceCcfLags;
+
   const std::string numbers = statistics_text(c, heldout) + ".";
-  c.complete = at_floor && white;
+  c.complete = at_floor && c.white;
   if (c.complete) {
     c.kind = "white_at_floor";
     c.reason = "The residual is white and the error is at the noise estimate on the estimation" +
@@ -95,7 +93,8 @@ nlohmann::json Completeness::to_json() const {
           {"ccf_lags", ccf_lags},
           {"worst_segment", worst_segment},
           {"worst_segment_rmse_over_sigma", finite_or_null(worst_segment_rmse_over_sigma)},
-          {"tolerance", kFloorTolerance}};
+          {"white", white},
+          {"tolerance", tolerance}};
 }
 
 }  // namespace hystbench

@@ -28,10 +28,12 @@ struct Completeness {
   std::string reason;  // one or two plain sentences with the numbers
   double sigma = 0.0;  // noise estimate, units of y
   double rmse_over_sigma = 0.0, heldout_rmse_over_sigma = 0.0;  // NaN when not defined
+  bool white = false;  // Ljung–Box p > 0.01 and at most kChanceCcfLags lags outside
   double ljung_box_p = 0.0;
   int ccf_outside = 0, ccf_lags = 0;
   std::string worst_segment;  // the segment with the largest RMSE, "" without segments
   double worst_segment_rmse_over_sigma = 0.0;
+  double tolerance = kFloorTolerance;
 
   nlohmann::json to_json() const;
 };

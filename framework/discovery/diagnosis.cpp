@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
 #include <exception>
 #include <optional>
 
+#include "framework/core/text.hpp"
 #include "framework/discovery/comparison.hpp"
 #include "framework/discovery/evidence.hpp"
 #include "framework/discovery/fit_record.hpp"
@@ -24,7 +24,8 @@ std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOpt
     for (const auto* info : EffectRegistry::instance().all()) all.push_back(info->name);
   std::vector<std::string> out;
   for (const auto& name : all)
-    if (!model.has(name)) out.push_back(name);
+    if (!model.has(name) && std::find(o.exclude.begin(), o.exclude.end(), name) == o.exclude.end())
+      out.push_back(name);
   return out;
 }
 
@@ -53,18 +54,6 @@ std::optional<Eigen::VectorXd> dynamics_reset_start(const Model& extended, const
   return changed ? std::optional<Eigen::VectorXd>(x0) : std::nullopt;
 }
 
-// A residual that is white and uncorrelated with the input says the current
-// basin already explains the data: a global restart could only rediscover it,
-// so candidates skip theirs (the most expensive part of a diagnosis).
-// Up to 2 of the ~51 cross-correlation lags may leave their 99 % band by
-// chance (binomial tail 1.4 %).
-bool residual_is_white(const Diagnosis& current) {
-  const nlohmann::json& r = current.where.value("residual", nlohmann::json::object());
-  if (!r.value("white", false)) return false;
-  const nlohmann::json& ccf = r.value("ccf", nlohmann::json::object());
-  return ccf.value("outside", 1 << 30) <= 2;
-}
-
 FitResult refit_candidate(const Model& extended, const std::string& effect, const Diagnosis& current,
                           const ModelData& data, const DiagnoseOptions& o) {
   const Eigen::VectorXd x0 = extended.carry_over(current.model, current.x);
@@ -75,7 +64,10 @@ FitResult refit_candidate(const Model& extended, const std::string& effect, cons
   };
   if (const auto reset = dynamics_reset_start(extended, effect, x0))
     keep_better(refit_warm(extended, data, *reset, fresh, o.fit));
-  if (o.candidate_restarts > 0 && !residual_is_white(current)) {
+  // A residual that is white and uncorrelated with the input says the current
+  // basin already explains the data: a global restart could only rediscover
+  // it, so candidates skip theirs (the most expensive part of a diagnosis).
+  if (o.candidate_restarts > 0 && !current.completeness.white) {
     FitOptions global = o.fit;
     global.restarts = o.candidate_restarts;
     global.status = nullptr;  // candidates run in parallel: one status line is enough
@@ -95,16 +87,15 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
   const bool heldout_ok = current.errors.n_heldout == 0 ||
                           c.after.rmse_heldout <= (1.0 - o.heldout_gain) * current.errors.rmse_heldout;
   c.significant = c.after.stable && c.delta_bic <= o.bic_threshold && heldout_ok;
+  // A dynamics effect fitted onto a resonance the model already has only
+  // re-describes that mode; it is shown but never the verdict.
+  const auto shared = shared_resonance(extended, r.x, data.sample_time, effect);
+  if (!shared.empty()) c.significant = false;
   c.check = check_model(extended, r.x, data, o.u_unit, o.y_unit);
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
                                  signature_in(current.where, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
-  // A dynamics effect fitted onto a resonance the model already has only
-  // re-describes that mode; it is shown but never the verdict.
-  if (const auto shared = shared_resonance(extended, r.x, data.sample_time, effect); !shared.empty()) {
-    c.significant = false;
-    c.evidence += " Not counted: " + shared + ".";
-  }
+  if (!shared.empty()) c.evidence += " Not counted: " + shared + ".";
   return c;
 }
 
@@ -133,11 +124,6 @@ const Candidate* Diagnosis::winner() const { return verdict == "none" ? nullptr 
 
 namespace {
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 double noise_sigma(const nlohmann::json& where) {
   return where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
@@ -178,8 +164,8 @@ struct CandidateProgress {
     const double left = elapsed / double(finished) * double(total - finished);
     std::string s = "candidate " + std::to_string(finished) + " of " + std::to_string(total) +
                     " done (" + effect + ")";
-    if (!best_effect.empty()) s += "; best so far " + best_effect + ", ΔBIC " + fmt("%.0f", best_bic);
-    if (finished < total) s += "; about " + fmt("%.0f", left) + " s left in this step";
+    if (!best_effect.empty()) s += "; best so far " + best_effect + ", ΔBIC " + format_number("%.0f", best_bic);
+    if (finished < total) s += "; about " + format_number("%.0f", left) + " s left in this step";
     return s;
   }
 };
@@ -196,11 +182,11 @@ std::vector<Candidate> try_candidates(const Diagnosis& d, const ModelData& data,
     // An exception must not leave an OpenMP region: it is rethrown below.
     try {
       tried[i] = try_candidate(effects[i], d, data, o);
+#pragma omp critical(diagnosis_status)
+      if (o.fit.status) o.fit.status(progress.done(effects[i], &*tried[i]));
     } catch (...) {
       failed[i] = std::current_exception();
     }
-#pragma omp critical(diagnosis_status)
-    if (o.fit.status) o.fit.status(progress.done(effects[i], tried[i] ? &*tried[i] : nullptr));
   }
   for (const auto& e : failed)
     if (e) std::rethrow_exception(e);
@@ -234,24 +220,24 @@ void decide(Diagnosis& d, const DiagnoseOptions& o) {
   d.verdict = heldout_decides ? by_heldout->effect : by_bic->effect;
   if (d.errors.n_heldout > 0 && by_heldout != by_bic) {
     d.close_call = {true,
-                    "BIC prefers " + by_bic->effect + " (ΔBIC " + fmt("%.1f", by_bic->delta_bic) +
-                        " against " + fmt("%.1f", by_heldout->delta_bic) + "), the held-out RMSE " +
+                    "BIC prefers " + by_bic->effect + " (ΔBIC " + format_number("%.1f", by_bic->delta_bic) +
+                        " against " + format_number("%.1f", by_heldout->delta_bic) + "), the held-out RMSE " +
                         "prefers " + by_heldout->effect + " (" +
-                        fmt("%.4g", by_heldout->after.rmse_heldout) + " against " +
-                        fmt("%.4g", by_bic->after.rmse_heldout) + "); " +
+                        format_number("%.4g", by_heldout->after.rmse_heldout) + " against " +
+                        format_number("%.4g", by_bic->after.rmse_heldout) + "); " +
                         (heldout_decides ? "the held-out error decides (it is at least " +
-                                               fmt("%.0f", 100 * o.heldout_gain) + " % lower)"
+                                               format_number("%.0f", 100 * o.heldout_gain) + " % lower)"
                                          : "BIC decides (the held-out errors differ by less than " +
-                                               fmt("%.0f", 100 * o.heldout_gain) + " %)"),
+                                               format_number("%.0f", 100 * o.heldout_gain) + " %)"),
                     heldout_decides ? by_bic->effect : by_heldout->effect};
     return;
   }
   if (significant.size() > 1 && significant[1]->delta_bic - by_bic->delta_bic < o.close_margin)
     d.close_call = {true,
                     "the runner-up " + significant[1]->effect + " is within " +
-                        fmt("%.0f", o.close_margin) + " of the winner's ΔBIC (" +
-                        fmt("%.1f", significant[1]->delta_bic) + " against " +
-                        fmt("%.1f", by_bic->delta_bic) +
+                        format_number("%.0f", o.close_margin) + " of the winner's ΔBIC (" +
+                        format_number("%.1f", significant[1]->delta_bic) + " against " +
+                        format_number("%.1f", by_bic->delta_bic) +
                         ") and does not have the better held-out RMSE; BIC decides",
                     significant[1]->effect};
 }

@@ -43,6 +43,7 @@ namespace hystbench {
 struct DiagnoseOptions {
   FitOptions fit;
   std::vector<std::string> candidates;  // empty: every registered effect not in the model
+  std::vector<std::string> exclude;     // never tried (discover: an effect just dropped again)
   double bic_threshold = -10.0;
   double heldout_gain = 0.01;
   double close_margin = 10.0;  // ΔBIC units: "very strong" on the Kass & Raftery scale

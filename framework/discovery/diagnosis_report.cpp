@@ -96,19 +96,16 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
     out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
         << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "
         << num(100.0 * d.options.value("heldout_gain", 0.01)) << " % lower).";
-    const auto& r = d.where.value("residual", nlohmann::json::object());
-    const double ratio = d.where.value("noise_floor", nlohmann::json::object())
-                             .value("rmse_over_sigma", std::nan(""));
-    if (r.value("white", false))
-      out << " The residual is white: the model has nothing systematic left to find.";
-    else if (ratio <= 1.1)
-      out << " The error is at the estimated noise floor (RMSE / σ = " << num(ratio)
-          << "); the residual is not white, which points at coloured measurement noise rather "
-             "than at a missing effect.";
-    else
-      out << " The residual is not white and the error is above the noise floor: something "
-             "systematic is left that no catalog effect captures; consider writing an effect of "
-             "your own (README, \"Adding a physical effect\").";
+    // The same judgement as the completeness line above, in terms of what to do.
+    if (d.completeness.complete)
+      out << " The model has nothing systematic left to find.";
+    else if (d.completeness.kind == "coloured_at_floor")
+      out << " The error is at the noise estimate but the residual is not white, which points "
+             "at coloured measurement noise rather than at a missing effect.";
+    else if (d.completeness.kind == "systematic")
+      out << " Something systematic is left that no catalog effect captures, or the fit is "
+             "stuck; consider writing an effect of your own (README, \"Adding a physical "
+             "effect\").";
     out << "\n\n";
     return out.str();
   }
@@ -182,7 +179,8 @@ std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& 
                                                    const HoldoutSpec& holdout, std::string& note) {
   namespace fs = std::filesystem;
   fs::create_directories(dir);
-  const std::uint64_t seed = d.options["fit"].value("seed", std::uint64_t(1));
+  const std::uint64_t seed =
+      d.options.value("fit", nlohmann::json::object()).value("seed", std::uint64_t{1});
   nlohmann::json j = d.to_json();
   j["data"] = source.to_json();
   j["holdout"] = holdout.text();

@@ -1,17 +1,8 @@
 #include "framework/discovery/evidence.hpp"
 
-#include <cstdio>
+#include "framework/core/text.hpp"
 
 namespace hystbench {
-namespace {
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
-}  // namespace
 
 std::string evidence_sentence(const EffectInfo& effect,
                               const std::optional<EffectSignature>& statistic,
@@ -19,12 +10,12 @@ std::string evidence_sentence(const EffectInfo& effect,
                               bool significant, const std::string& y_unit) {
   const std::string unit = y_unit.empty() ? "" : " " + y_unit;
   std::string s = "Adding " + effect.name + " (" + effect.summary + ") changes the RMSE from " +
-                  fmt("%.4g", before.rmse_estimation) + " to " +
-                  fmt("%.4g", after.rmse_estimation) + unit;
+                  format_number("%.4g", before.rmse_estimation) + " to " +
+                  format_number("%.4g", after.rmse_estimation) + unit;
   if (before.n_heldout)
-    s += " (held out: " + fmt("%.4g", before.rmse_heldout) + " to " +
-         fmt("%.4g", after.rmse_heldout) + unit + ")";
-  s += ", ΔBIC = " + fmt("%.1f", delta_bic) + ". " +
+    s += " (held out: " + format_number("%.4g", before.rmse_heldout) + " to " +
+         format_number("%.4g", after.rmse_heldout) + unit + ")";
+  s += ", ΔBIC = " + format_number("%.1f", delta_bic) + ". " +
        (significant ? "It helps because " : "Not significant; its signature would be that ") +
        effect.signature;
   if (statistic && !statistic->sentence.empty()) s += "; here " + statistic->sentence;

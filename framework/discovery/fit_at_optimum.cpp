@@ -1,23 +1,18 @@
 #include "framework/discovery/fit_at_optimum.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <set>
 
+#include "framework/core/rng.hpp"
+#include "framework/core/text.hpp"
 #include "framework/discovery/completeness.hpp"
 #include "framework/discovery/parameter_uncertainty.hpp"
 
 namespace hystbench {
 namespace {
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 std::string rmse_text(const FitErrors& e) {
-  return fmt("%.4g", e.rmse_estimation) + " (held out " + fmt("%.4g", e.rmse_heldout) + ")";
+  return format_number("%.4g", e.rmse_estimation) + " (held out " + format_number("%.4g", e.rmse_heldout) + ")";
 }
 
 // The effects owning the most correlated pair of parameters (not the gain).
@@ -48,18 +43,18 @@ bool suspect_optimum(const FitErrors& e, double sigma, std::string& reason) {
   }
   const double gap = e.rmse_heldout / e.rmse_estimation;
   if (gap > kHeldoutGapRatio) {
-    reason = "the held-out RMSE is " + fmt("%.3g", gap) + " times the estimation RMSE (above " +
-             fmt("%.3g", kHeldoutGapRatio) + ")";
+    reason = "the held-out RMSE is " + format_number("%.3g", gap) + " times the estimation RMSE (above " +
+             format_number("%.3g", kHeldoutGapRatio) + ")";
     return true;
   }
   if (sigma > 0 && e.rmse_estimation <= kFloorTolerance * sigma &&
       e.rmse_heldout > kFloorTolerance * sigma) {
     reason = "the estimation RMSE is at the noise estimate (" +
-             fmt("%.3g", e.rmse_estimation / sigma) + " σ) but the held-out RMSE is not (" +
-             fmt("%.3g", e.rmse_heldout / sigma) + " σ)";
+             format_number("%.3g", e.rmse_estimation / sigma) + " σ) but the held-out RMSE is not (" +
+             format_number("%.3g", e.rmse_heldout / sigma) + " σ)";
     return true;
   }
-  reason = "the held-out and estimation errors agree (ratio " + fmt("%.3g", gap) + ")";
+  reason = "the held-out and estimation errors agree (ratio " + format_number("%.3g", gap) + ")";
   return false;
 }
 
@@ -75,10 +70,12 @@ OptimumCheck ensure_optimum(FitResult& fit, const ModelData& data, double sigma,
     c.actions.push_back(what + ": RMSE " + rmse_text(e) + (better ? ", kept" : ", not better"));
     if (better) fit = std::move(other), c.improved = true;
   };
+  // Seeds of their own: the fit being checked already used the plain ones.
   FitOptions global = o;
+  global.seed = trial_seed(o.seed, "optimum", 0);
   if (o.status) o.status("fit off its optimum? " + std::to_string(o.restarts) + " global restarts");
-  consider(fit_model(fit.model, data, global), std::to_string(o.restarts) +
-                                                    " global restarts of " + fit.model.text());
+  consider(fit_model(fit.model, data, global),
+           std::to_string(o.restarts) + " global restarts of " + fit.model.text());
   double correlation = 0;
   std::string pair;
   for (const auto& effect : correlated_effects(fit, data, correlation, pair)) {
@@ -89,9 +86,20 @@ OptimumCheck ensure_optimum(FitResult& fit, const ModelData& data, double sigma,
     if (o.status) o.status("fit off its optimum? " + effect + " searched again");
     consider(refit_warm(fit.model, data, x0, fresh, o),
              effect + " searched again from neutral (" + pair + " correlate at " +
-                 fmt("%.3f", correlation) + ")");
+                 format_number("%.3f", correlation) + ")");
   }
   c.after = fit_errors(fit.model, fit.x, data);
+  return c;
+}
+
+OptimumCheck OptimumCheck::from_json(const nlohmann::json& j) {
+  OptimumCheck c;
+  c.triggered = j.at("triggered").get<bool>();
+  c.reason = j.at("reason").get<std::string>();
+  c.actions = j.at("actions").get<std::vector<std::string>>();
+  c.improved = j.at("improved").get<bool>();
+  c.before = FitErrors::from_json(j.at("before"));
+  c.after = FitErrors::from_json(j.at("after"));
   return c;
 }
 

@@ -29,6 +29,7 @@ struct OptimumCheck {
   FitErrors before, after;
 
   nlohmann::json to_json() const;
+  static OptimumCheck from_json(const nlohmann::json& j);  // inverse of to_json
 };
 
 // Whether (errors, sigma) look like a fit off its optimum; sets `reason`.

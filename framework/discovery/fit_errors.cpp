@@ -34,4 +34,15 @@ nlohmann::json FitErrors::to_json() const {
   return j;
 }
 
+FitErrors FitErrors::from_json(const nlohmann::json& j) {
+  auto num = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : 0.0; };
+  FitErrors e;
+  e.stable = j.at("stable").get<bool>();
+  e.n_estimation = j.at("estimation_samples").get<long>();
+  e.n_heldout = j.at("heldout_samples").get<long>();
+  e.rmse_estimation = num(j.at("rmse"));
+  e.rmse_heldout = num(j.at("heldout_rmse"));
+  return e;
+}
+
 }  // namespace hystbench

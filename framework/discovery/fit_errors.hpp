@@ -15,6 +15,8 @@ struct FitErrors {
   double rmse_estimation = 0.0, rmse_heldout = 0.0;  // physical; held-out 0 when none
 
   nlohmann::json to_json() const;
+  // Inverse of to_json (the SSE is not stored there and reads back as 0).
+  static FitErrors from_json(const nlohmann::json& j);
 };
 
 FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelData& data);

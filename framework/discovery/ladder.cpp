@@ -110,7 +110,12 @@ LadderStep next_step(const Ladder& ladder, const ModelData& data, const Discover
 // Diagnoses `next` (the fit of a new rung) and appends the rung.
 void climb(Ladder& ladder, const LadderStep& next, const ModelData& data, const DiscoverOptions& o,
            const LadderObserver& on_step) {
-  Diagnosis d = diagnose(next.model, next.x, data, o.diagnose);
+  // An effect dropped again right after it was added would only be found
+  // again by the same diagnosis: it sits this rung out.
+  DiagnoseOptions diagnose_options = o.diagnose;
+  if (!next.added.empty() && !next.model.has(next.added))
+    diagnose_options.exclude.push_back(next.added);
+  Diagnosis d = diagnose(next.model, next.x, data, diagnose_options);
   LadderStep s = make_step(d);  // the diagnosis polished the fit: that fit is the rung
   s.added = next.added;
   s.removed = next.removed;

@@ -57,6 +57,7 @@ Diagnosis restored_diagnosis(const nlohmann::json& j, const ModelData& data,
   d.where = compare_signals(comparison_input(data, std::move(y), o.diagnose.u_unit, o.diagnose.y_unit));
   d.completeness = assess_completeness(d.errors, d.where);
   d.check = check_model(d.model, d.x, data, o.diagnose.u_unit, o.diagnose.y_unit);
+  d.optimum = OptimumCheck::from_json(j.at("optimum"));
   d.verdict = j.at("verdict").get<std::string>();
   d.close_call = {j.at("close_call").at("close").get<bool>(),
                   j.at("close_call").at("reason").get<std::string>(),
@@ -84,6 +85,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
           {"close_call", {{"close", d.close_call.close},
                           {"reason", d.close_call.reason},
                           {"runner_up", d.close_call.runner_up}}},
+          {"optimum", d.optimum.to_json()},
           {"winner", winner}};
 }
 

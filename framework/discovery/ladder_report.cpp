@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdint>
 #include <sstream>
 
 #include "framework/discovery/diagnosis_report.hpp"
@@ -206,7 +208,8 @@ std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir
     files.insert(files.end(), step.begin(), step.end());
   }
   const auto& last = ladder.steps.back();
-  const std::uint64_t seed = ctx.options.value("fit", nlohmann::json::object()).value("seed", 1);
+  const std::uint64_t seed =
+      ctx.options.value("fit", nlohmann::json::object()).value("seed", std::uint64_t{1});
   FitRecord final_fit = make_fit_record(last.model, last.x, ctx.data, ctx.source, ctx.holdout, seed);
   write_file_atomic(dir / "fit.json", final_fit.to_json().dump(2) + "\n");
   write_file_atomic(dir / "checkpoint.json",
@@ -222,8 +225,31 @@ std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir
   return files;
 }
 
+namespace {
+
+// FNV-1a over the bytes of the signals and the hold-out mask: a file
+// regenerated under the same name is other data.
+std::string data_fingerprint(const ModelData& d) {
+  std::uint64_t h = 14695981039346656037ull;
+  const auto mix = [&h](const Eigen::VectorXd& v) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(v.data());
+    for (std::size_t i = 0; i < std::size_t(v.size()) * sizeof(double); ++i)
+      h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  for (const auto* v : {&d.t, &d.u, &d.y, &d.estimation}) mix(*v);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+}  // namespace
+
 nlohmann::json checkpoint_context(const LadderContext& ctx) {
-  return {{"data", ctx.source.to_json()}, {"holdout", ctx.holdout.text()}, {"options", ctx.options}};
+  return {{"data", ctx.source.to_json()},
+          {"samples", ctx.data.size()},
+          {"data_fingerprint", data_fingerprint(ctx.data)},
+          {"holdout", ctx.holdout.text()},
+          {"options", ctx.options}};
 }
 
 }  // namespace hystbench

@@ -1,8 +1,8 @@
 #include "framework/discovery/model_check.hpp"
 
 #include <cmath>
-#include <cstdio>
 
+#include "framework/core/text.hpp"
 #include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/parameter_uncertainty.hpp"
 #include "framework/discovery/resonance.hpp"
@@ -14,11 +14,6 @@ constexpr double kNeutralSd = 2.0;         // "within noise" of the neutral valu
 constexpr double kBoundTolerance = 1e-6;   // of the parameter's range
 constexpr double kStrongCorrelation = 0.95;
 
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 bool near_neutral(const EffectParam& p, double x, double sd) {
   const double gap = std::abs(x - p.neutral);
@@ -61,7 +56,7 @@ std::vector<std::string> ModelCheck::warnings() const {
   for (const auto& e : effects) {
     if (e.neutral)
       out.push_back(e.effect + " does nothing within noise: every parameter lies within " +
-                    fmt("%.0f", kNeutralSd) + " standard errors of its neutral value.");
+                    format_number("%.0f", kNeutralSd) + " standard errors of its neutral value.");
     for (const auto& name : e.at_bound)
       out.push_back(name + " sits on a bound of its search range: the effect may be standing in "
                            "for something else, or the range is too narrow.");
@@ -69,7 +64,7 @@ std::vector<std::string> ModelCheck::warnings() const {
   for (const auto& s : shared_modes) out.push_back(s + ".");
   if (std::abs(correlation) >= kStrongCorrelation)
     out.push_back(correlated_a + " and " + correlated_b + " trade against each other (correlation " +
-                  fmt("%.3f", correlation) + "): the data hardly tell them apart.");
+                  format_number("%.3f", correlation) + "): the data hardly tell them apart.");
   return out;
 }
 

@@ -155,9 +155,18 @@ void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
     throw InputError("--holdout " + spec.text() + ": leaves fewer than two samples to fit");
 }
 
-}  // namespace hystbench
+namespace {
 
-namespace hystbench {
+std::string by_frequency_text(const ModelData& d, const std::string& count) {
+  std::set<std::string> held;
+  for (Eigen::Index k = 0; k < d.size(); ++k)
+    if (d.estimation[k] == 0.0) held.insert(d.segment[k]);
+  return count + ": whole segments spread over the frequency band (" +
+         join(std::vector<std::string>(held.begin(), held.end()), ", ") +
+         "); a test of extrapolation to frequencies the fit never sees.";
+}
+
+}  // namespace
 
 std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
   const std::string count = std::to_string(d.heldout_count()) + " of " + std::to_string(d.size()) +
@@ -165,6 +174,9 @@ std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
   switch (spec.mode) {
     case HoldoutSpec::Mode::None:
       return "Nothing held out (--holdout none): every error is on the data the fit saw.";
+    case HoldoutSpec::Mode::ByFrequency:
+      if (!d.segment.empty() && segment_spans(d).size() >= 4) return by_frequency_text(d, count);
+      [[fallthrough]];  // fewer than four segments: the auto hold-out was used
     case HoldoutSpec::Mode::Auto:
       return count + (d.segment.empty() ? ": the last quarter of each eighth of the record"
                                         : ": the last quarter of every segment") +
@@ -175,14 +187,6 @@ std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
     case HoldoutSpec::Mode::Segments:
       return count + ": the segments " + join(spec.segments, ", ") +
              " (chosen by the user); effects are selected on how they extrapolate to them.";
-    case HoldoutSpec::Mode::ByFrequency: {
-      std::set<std::string> held;
-      for (Eigen::Index k = 0; k < d.size(); ++k)
-        if (d.estimation[k] == 0.0 && !d.segment.empty()) held.insert(d.segment[k]);
-      return count + ": whole segments spread over the frequency band (" +
-             join(std::vector<std::string>(held.begin(), held.end()), ", ") +
-             "); a test of extrapolation to frequencies the fit never sees.";
-    }
   }
   return count + ".";
 }

@@ -19,8 +19,9 @@ bool rank_sum_exact_applies(std::size_t n1, std::size_t n2);
 // n1 belonging to the first sample. Ties keep their mid-ranks, which gives
 // the distribution conditional on the observed tie pattern: still exact.
 // Two-sided p = min(1, 2 min(P(W_1 <= w), P(W_1 >= w))), as R's
-// wilcox.test(exact = TRUE); with ties the distribution need not be
-// symmetric, hence the smaller tail rather than |W_1 - mu| >= |w - mu|.
+// wilcox.test(exact = TRUE) gives without ties (R refuses the exact test
+// with ties); with ties the distribution need not be symmetric, hence the
+// smaller tail rather than |W_1 - mu| >= |w - mu|.
 double rank_sum_exact_p(const std::vector<double>& ranks, std::size_t n1);
 
 }  // namespace hystbench::stats

@@ -143,7 +143,7 @@ SignatureValue missing_resonance(const ResidualView& r) {
       if (!msd.apply(p, ctx, change)) continue;
       const double c = correlation(r.e, change - r.y_model);
       if (std::isfinite(c) && !(std::abs(c) <= std::abs(best.value)))
-        best = {c, {{"f_n", std::round(f_n)}, {"zeta", zeta}}};
+        best = {c, {{"f_n", f_n}, {"zeta", zeta}}};
     }
   }
   return best;

@@ -61,8 +61,8 @@ SignatureValue residual_spectral_peak(const ResidualView& r) {
   const double median = above[above.size() / 2];
   if (!(median > 0)) return {};
   return {highest / median,
-          {{"frequency", std::round(residual.frequency[begin + peak])},
-           {"band", std::round(input.frequency[begin - 1])}}};
+          {{"frequency", residual.frequency[begin + peak]},
+           {"band", input.frequency[begin - 1]}}};
 }
 
 class SecondMode : public Effect {
