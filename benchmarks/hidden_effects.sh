@@ -11,8 +11,8 @@
 #
 # HYSTBENCH_EXE defaults to build/hystbench, OUT_DIR to results/hidden_effects
 # (both relative to the repository). Set CASES="creep offset" to run only
-# some cases (the README then lists only those). Reading the JSON case file
-# needs python3.
+# some cases (the README then lists only those, unless APPEND=1 adds them to
+# the summary already there). Reading the JSON case file needs python3.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -52,7 +52,11 @@ u_unit="$(json "$case_file" 'd["units"]["u"]')"
 y_unit="$(json "$case_file" 'd["units"]["y"]')"
 
 summary="$out/summary.csv"
-echo "effect,hidden,start,verdict,winner_delta_bic,final_model,heldout_rmse,true_sd,ratio,diagnose_s,discover_s,samples,complete,spurious" > "$summary"
+# APPEND=1 adds the cases run to an existing summary.csv instead of starting
+# it anew (to finish a run that was stopped).
+if [[ -z "${APPEND:-}" || ! -f "$summary" ]]; then
+  echo "effect,hidden,start,verdict,winner_delta_bic,final_model,heldout_rmse,true_sd,ratio,diagnose_s,discover_s,samples,complete,spurious" > "$summary"
+fi
 
 write_readme() {
 python3 - "$summary" "$out/README.md" "$case_file" <<'PY'

@@ -243,8 +243,8 @@ TEST(EffectSignatures, DynamicsEffectsReadTheSameResidualDifferently) {
   EXPECT_GT(second_mode, 20.0);
   EXPECT_LT(arx, 0.05);
   EXPECT_LT(std::abs(loop), 0.1);
-  EXPECT_NE(msd, arx);
-  EXPECT_NE(msd, loop);
+  // A resonance would change ŷ at 5 Hz, not at 200 Hz.
+  EXPECT_LT(std::abs(msd), 0.1);
 }
 
 TEST(EffectSignatures, EveryRegisteredEffectIsCollectedAndWritten) {

@@ -7,6 +7,7 @@
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/number_range.hpp"
+#include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
@@ -113,6 +114,7 @@ Action add_compare_command(CLI::App& app) {
                   "the data are one period of a periodic input: simulate this many periods from "
                   "rest and score the last (steady state)")
       ->capture_default_str()->check(number_range(1, 1000, "give 1 to 1000 periods"));
+  add_threads_option(cmd);
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, cmd, load_plugins] {

@@ -1,8 +1,7 @@
 #include "framework/cli/model_options.hpp"
 
-#include <omp.h>
-
 #include "framework/cli/number_range.hpp"
+#include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
 
 namespace hystbench::cli {
@@ -41,9 +40,6 @@ FitOptions FitCliOptions::fit_options() const {
     throw InputError("--optimizer-params: not valid JSON: " + std::string(e.what()));
   }
   f.validate();
-  // Every command that fits runs its OpenMP loops on this many threads; the
-  // numbers do not depend on it (seeds are per start and per candidate).
-  if (threads > 0) omp_set_num_threads(threads);
   return f;
 }
 
@@ -66,9 +62,7 @@ void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
       ->check(number_range(0, kUnbounded,
                            "give a positive number of polish evaluations (0 = default)"));
   cmd->add_option("--seed", o.fit.seed, "seed of every random choice")->capture_default_str();
-  cmd->add_option("--threads", o.threads,
-                  "worker threads (0: one per core); the results do not depend on it")
-      ->capture_default_str()->check(number_range(0, 4096, "give 0 (one per core) to 4096 threads"));
+  add_threads_option(cmd);
   cmd->add_option("--substeps", o.substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));

@@ -24,7 +24,6 @@ struct FitCliOptions {
   FitOptions fit;  // the library's defaults are the command line's
   std::string optimizer_params = "{}";
   int substeps = 0;
-  int threads = 0;  // 0: OpenMP's default
   // Validated (bad optimizer, parameters or local method -> InputError).
   FitOptions fit_options() const;
 };

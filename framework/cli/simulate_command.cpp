@@ -5,9 +5,10 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/number_range.hpp"
+#include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
-#include "framework/io/atomic_file.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
+#include "framework/io/atomic_file.hpp"
 #include "problems/hammerstein/synthetic_data.hpp"
 
 namespace hystbench::cli {
@@ -102,6 +103,7 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--input-unit", o->input_unit, "unit of u, recorded for figure axes (e.g. V)");
   cmd->add_option("--output-unit", o->output_unit, "unit of y, recorded for figure axes (e.g. µm)");
   cmd->add_option("--out", o->out, "output CSV (the truth file is written beside it)")->required();
+  add_threads_option(cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

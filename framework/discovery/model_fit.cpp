@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
@@ -58,6 +59,14 @@ void polish_from(const Problem& problem, const Eigen::VectorXd& x0, const FitOpt
 
 void report(const FitOptions& o, const std::string& text) {
   if (o.status) o.status(text);
+}
+
+// "restart 2 of 3; best SSE so far 12.5; about 40 s left" (normalised SSE).
+std::string restart_status(int r, int restarts, double best_sse, double elapsed) {
+  std::string s = "restart " + std::to_string(r + 1) + " of " + std::to_string(restarts);
+  if (std::isfinite(best_sse)) s += "; best SSE so far " + format_number("%.4g", best_sse);
+  if (r > 0) s += "; about " + format_number("%.0f", elapsed / r * (restarts - r)) + " s left";
+  return s;
 }
 
 // The problem the global stages search: the leading samples of the record
@@ -135,7 +144,7 @@ FitResult fit_model(const Model& model, const ModelData& data, const FitOptions&
     polish_from(problem, *warm, o, trial_seed(o.seed, "warm:" + model.text(), 0), best);
   }
   for (int r = 0; r < o.restarts; ++r) {
-    report(o, "restart " + std::to_string(r + 1) + "/" + std::to_string(o.restarts));
+    report(o, restart_status(r, o.restarts, best.sse, seconds_since(start)));
     const auto seed = trial_seed(o.seed, "fit:" + model.text(), std::uint64_t(r));
     EvaluationContext ctx(coarse.problem, evaluation_budget(o.global_budget(dim)), seed);
     make_optimizer(o.optimizer, o.optimizer_params, "--optimizer")->run(ctx);
