@@ -124,7 +124,6 @@ const Candidate* Diagnosis::winner() const { return verdict == "none" ? nullptr 
 
 namespace {
 
-
 double noise_sigma(const nlohmann::json& where) {
   return where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
 }
@@ -164,7 +163,8 @@ struct CandidateProgress {
     const double left = elapsed / double(finished) * double(total - finished);
     std::string s = "candidate " + std::to_string(finished) + " of " + std::to_string(total) +
                     " done (" + effect + ")";
-    if (!best_effect.empty()) s += "; best so far " + best_effect + ", ΔBIC " + format_number("%.0f", best_bic);
+    if (!best_effect.empty())
+      s += "; best so far " + best_effect + ", ΔBIC " + format_number("%.0f", best_bic);
     if (finished < total) s += "; about " + format_number("%.0f", left) + " s left in this step";
     return s;
   }
@@ -179,13 +179,18 @@ std::vector<Candidate> try_candidates(const Diagnosis& d, const ModelData& data,
   omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < effects.size(); ++i) {
-    // An exception must not leave an OpenMP region: it is rethrown below.
+    // An exception must leave neither the OpenMP region nor the critical
+    // section: it is rethrown below.
     try {
       tried[i] = try_candidate(effects[i], d, data, o);
-#pragma omp critical(diagnosis_status)
-      if (o.fit.status) o.fit.status(progress.done(effects[i], &*tried[i]));
     } catch (...) {
       failed[i] = std::current_exception();
+    }
+#pragma omp critical(diagnosis_status)
+    try {
+      if (o.fit.status && tried[i]) o.fit.status(progress.done(effects[i], &*tried[i]));
+    } catch (...) {
+      if (!failed[i]) failed[i] = std::current_exception();
     }
   }
   for (const auto& e : failed)
