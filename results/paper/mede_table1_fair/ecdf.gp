@@ -18,6 +18,8 @@ set offsets graph 0.05, graph 0.02, 0, 0
 set yrange [0:1.02]
 set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
 set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1
+# no trial reached the target f ≤ 1.217e+04: every line stays at 0.
+set label 1 "no trial reached the target f ≤ 1.217e+04" at graph 0.5, graph 0.5 center front noenhanced font ",14"
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
