@@ -1,7 +1,7 @@
 #pragma once
 // The plain sentence that explains one diagnosis candidate: what adding the
 // effect did to the error, and what the effect's own residual statistic
-// (EffectInfo::statistic) says of the current fit (DISCOVERY.md §2).
+// (EffectInfo::statistic) says of the current fit (docs/discovery.md).
 #include <optional>
 #include <string>
 

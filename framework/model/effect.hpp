@@ -91,7 +91,7 @@ struct EffectInfo {
   std::string citation;
   EffectStage stage = EffectStage::Output;
   std::vector<EffectParam> params;
-  // Residual signature that points at this effect (DISCOVERY.md §2), as one
+  // Residual signature that points at this effect (docs/discovery.md), as one
   // plain sentence completing "adding <name> helps because ...".
   std::string signature;
   // The statistic of the current residual that measures that signature, and

@@ -1,6 +1,6 @@
 #pragma once
-// The residual statistic by which an effect says it is missing (DISCOVERY.md
-// §2). Each effect declares one in its EffectInfo, next to its parameters and
+// The residual statistic by which an effect says it is missing (docs/discovery.md).
+// Each effect declares one in its EffectInfo, next to its parameters and
 // citation: a name, how to compute it from a ResidualView and the sentence
 // that cites it. `compare` and `diagnose` compute the statistic of every
 // registered effect, plugins included, on the current residual, and the

@@ -25,7 +25,7 @@ class Drift : public Effect {
     EffectInfo i;
     i.name = "drift";
     i.summary = "linear sensor drift c1·t added to the output";
-    i.citation = "DISCOVERY.md §2 (sensor offset and drift y + c0 + c1·t)";
+    i.citation = "docs/discovery.md (sensor offset and drift y + c0 + c1·t)";
     i.stage = EffectStage::Output;
     i.params = {{"c1", -1.0, 1.0, 0.0, 1, 0, "1/s", "drift rate"}};
     i.signature = "the residual has a linear trend in time that does not depend on the input";

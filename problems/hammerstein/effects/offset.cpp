@@ -24,7 +24,7 @@ class Offset : public Effect {
     i.summary = "constant sensor offset added to the output";
     i.stage = EffectStage::Output;
     i.params = {{"c0", -5.0, 5.0, 0.0, 1, 0, "", "offset"}};
-    i.citation = "DISCOVERY.md §2 (sensor offset and drift y + c0 + c1·t)";
+    i.citation = "docs/discovery.md (sensor offset and drift y + c0 + c1·t)";
     i.signature = "the residual has a non-zero mean that does not depend on the input";
     i.statistic = {"mean(e)/std(e)", mean_over_std,
                    "the residual mean is {value} residual standard deviations"};

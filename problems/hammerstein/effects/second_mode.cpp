@@ -75,7 +75,7 @@ class SecondMode : public Effect {
         "compliance";
     i.citation =
         "Meirovitch, Fundamentals of Vibrations, 2001 (modal superposition; cantilever "
-        "ω₂/ω₁ ≈ 6.27); DISCOVERY.md §2";
+        "ω₂/ω₁ ≈ 6.27); docs/discovery.md";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"participation", -1.0, 1.0, 0.0, 0, 0, "",
