@@ -8,6 +8,8 @@
 #include <exception>
 #include <optional>
 
+#include "framework/core/parallel_jobs.hpp"
+#include "framework/core/rng.hpp"
 #include "framework/core/text.hpp"
 #include "framework/discovery/comparison.hpp"
 #include "framework/discovery/evidence.hpp"
@@ -76,10 +78,11 @@ FitResult refit_candidate(const Model& extended, const std::string& effect, cons
   return best;
 }
 
-Candidate try_candidate(const std::string& effect, const Diagnosis& current, const ModelData& data,
-                        const DiagnoseOptions& o) {
-  const Model extended = current.model.with(effect);
-  const FitResult r = refit_candidate(extended, effect, current, data, o);
+// The candidate judged from its fit: ΔBIC, significance, fitted
+// parameters and the evidence sentence.
+Candidate judge_candidate(const std::string& effect, const FitResult& r, const Diagnosis& current,
+                          const ModelData& data, const DiagnoseOptions& o) {
+  const Model& extended = r.model;
   Candidate c{effect, extended, r.x, fit_errors(extended, r.x, data)};
   c.delta_k = extended.dimension() - current.model.dimension();
   const long n = current.errors.n_estimation;
@@ -97,6 +100,12 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   if (!shared.empty()) c.evidence += " Not counted: " + shared + ".";
   return c;
+}
+
+Candidate try_candidate(const std::string& effect, const Diagnosis& current, const ModelData& data,
+                        const DiagnoseOptions& o) {
+  const Model extended = current.model.with(effect);
+  return judge_candidate(effect, refit_candidate(extended, effect, current, data, o), current, data, o);
 }
 
 }  // namespace
@@ -170,38 +179,67 @@ struct CandidateProgress {
   }
 };
 
+void sort_candidates(std::vector<Candidate>& candidates) {
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.significant != b.significant) return a.significant;
+    return a.delta_bic < b.delta_bic;
+  });
+}
+
 std::vector<Candidate> try_candidates(const Diagnosis& d, const ModelData& data,
                                       const DiagnoseOptions& o) {
   const auto effects = candidate_effects(d.model, o);
   std::vector<std::optional<Candidate>> tried(effects.size());
-  std::vector<std::exception_ptr> failed(effects.size());
+  std::exception_ptr status_failed;
   CandidateProgress progress{effects.size()};
   omp_set_max_active_levels(2);
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t i = 0; i < effects.size(); ++i) {
-    // An exception must leave neither the OpenMP region nor the critical
-    // section: it is rethrown below.
-    try {
-      tried[i] = try_candidate(effects[i], d, data, o);
-    } catch (...) {
-      failed[i] = std::current_exception();
-    }
+  parallel_jobs(effects.size(), [&](std::size_t i) {
+    tried[i] = try_candidate(effects[i], d, data, o);
+    // No exception may leave the critical section either.
 #pragma omp critical(diagnosis_status)
     try {
-      if (o.fit.status && tried[i]) o.fit.status(progress.done(effects[i], &*tried[i]));
+      if (o.fit.status) o.fit.status(progress.done(effects[i], &*tried[i]));
     } catch (...) {
-      if (!failed[i]) failed[i] = std::current_exception();
+      status_failed = std::current_exception();
     }
-  }
-  for (const auto& e : failed)
-    if (e) std::rethrow_exception(e);
+  });
+  if (status_failed) std::rethrow_exception(status_failed);
   std::vector<Candidate> out;
   for (auto& c : tried) out.push_back(std::move(*c));
-  std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
-    if (a.significant != b.significant) return a.significant;
-    return a.delta_bic < b.delta_bic;
-  });
+  sort_candidates(out);
   return out;
+}
+
+// The verdict rests on the leading candidates' fits, and a warm refit plus
+// `candidate_restarts` global restarts can leave a candidate in a poorer
+// basin when its effect trades against one the model has (an input delay
+// against the ARX block's lag lands a fraction of a sample off, with the
+// ARX coefficients bent to match). So the two candidates with the lowest
+// ΔBIC get a plain fit's global restarts, with seeds of their own, and keep
+// the better fit before the verdict.
+void refit_leaders(Diagnosis& d, const ModelData& data, const DiagnoseOptions& o) {
+  if (o.fit.restarts == 0 || d.completeness.white) return;
+  std::vector<Candidate*> leaders;
+  for (auto& c : d.candidates)
+    if (std::isfinite(c.delta_bic) && c.delta_bic <= o.bic_threshold) leaders.push_back(&c);
+  std::sort(leaders.begin(), leaders.end(),
+            [](const Candidate* a, const Candidate* b) { return a->delta_bic < b->delta_bic; });
+  if (leaders.size() > 2) leaders.resize(2);
+  if (leaders.empty()) return;
+  std::string names;
+  for (const auto* c : leaders) names += (names.empty() ? "" : ", ") + c->effect;
+  if (o.fit.status)
+    o.fit.status("refitting the leading candidates (" + names + ") with " +
+                 std::to_string(o.fit.restarts) + " global restarts each");
+  parallel_jobs(leaders.size(), [&](std::size_t i) {
+    Candidate& c = *leaders[i];
+    FitOptions global = o.fit;
+    global.seed = trial_seed(o.fit.seed, "leading candidate", 0);
+    global.status = nullptr;
+    const FitResult r = fit_model(c.model, data, global, &c.x);
+    if (fit_errors(r.model, r.x, data).sse < c.after.sse) c = judge_candidate(c.effect, r, d, data, o);
+  });
+  sort_candidates(d.candidates);
 }
 
 }  // namespace
@@ -251,6 +289,7 @@ Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData
                    const DiagnoseOptions& o) {
   Diagnosis d = current_fit(model, x, data, o);
   d.candidates = try_candidates(d, data, o);
+  refit_leaders(d, data, o);
   decide(d, o);
   return d;
 }

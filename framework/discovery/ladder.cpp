@@ -1,9 +1,9 @@
 #include "framework/discovery/ladder.hpp"
 
-#include <exception>
 #include <optional>
 #include <utility>
 
+#include "framework/core/parallel_jobs.hpp"
 #include "framework/core/text.hpp"
 #include "framework/discovery/resonance.hpp"
 
@@ -24,19 +24,11 @@ std::optional<std::pair<std::string, FitResult>> best_removal(const FitResult& c
   const double current_bic = bic(current.sse, n, current.model.dimension());
   const auto effects = current.model.effects();
   std::vector<std::optional<FitResult>> tried(effects.size());
-  std::vector<std::exception_ptr> failed(effects.size());
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t i = 0; i < effects.size(); ++i) {
-    if (effects[i] == keep) continue;
-    try {  // an exception must not leave an OpenMP region
-      const Model smaller = current.model.without(effects[i]);
-      tried[i] = refit_warm(smaller, data, smaller.carry_over(current.model, current.x), {}, fit);
-    } catch (...) {
-      failed[i] = std::current_exception();
-    }
-  }
-  for (const auto& e : failed)
-    if (e) std::rethrow_exception(e);
+  parallel_jobs(effects.size(), [&](std::size_t i) {
+    if (effects[i] == keep) return;
+    const Model smaller = current.model.without(effects[i]);
+    tried[i] = refit_warm(smaller, data, smaller.carry_over(current.model, current.x), {}, fit);
+  });
   std::optional<std::pair<std::string, FitResult>> best;
   double best_bic = current_bic;
   for (std::size_t i = 0; i < effects.size(); ++i) {
