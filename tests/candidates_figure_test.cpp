@@ -20,7 +20,7 @@ Diagnosis diagnosis(long heldout) {
   current.rmse_estimation = 50;
   current.rmse_heldout = heldout ? 40 : 0;
   Diagnosis d{Model::parse("hysteresis"), Eigen::VectorXd(), current};
-  d.where = {{"noise_floor", {{"sigma", 1.0}}}};
+  d.where.noise_floor.sigma = 1.0;
   for (const char* effect : {"feedback_hysteresis", "offset"}) {
     FitErrors after;
     after.rmse_estimation = 20;

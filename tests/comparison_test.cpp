@@ -131,14 +131,14 @@ TEST(ComparisonSignals, DegenerateInputsGiveNaNFreeJson) {
   zeros.estimation = Eigen::VectorXd::Zero(40);
   cases.push_back(zeros);
   for (const auto& in : cases) {
-    const json m = compare_signals(in);
+    const json m = to_json(compare_signals(in));
     SCOPED_TRACE("n = " + std::to_string(in.t.size()));
     expect_all_finite(m);
     EXPECT_EQ(json::parse(m.dump()), m);
     EXPECT_TRUE(m["signatures"].is_object());
   }
   // A diverged model is never called white.
-  EXPECT_FALSE(compare_signals(diverged)["residual"]["white"].get<bool>());
+  EXPECT_FALSE(compare_signals(diverged).residual.white);
 }
 
 TEST(ComparisonSignals, RejectsMismatchedLengths) {
@@ -155,28 +155,29 @@ TEST(ComparisonSignals, PartsAndBreakdownsCoverEverySample) {
   std::fill(in.segment.begin() + 400, in.segment.end(), "c");
   in.estimation = Eigen::VectorXd::Ones(600);
   in.estimation.segment(300, 300).setZero();  // "b" is half and half, "c" held out
-  const json m = compare_signals(in);
-  EXPECT_EQ(m["estimation"]["n"].get<long>() + m["heldout"]["n"].get<long>(), 600);
-  const auto sum_n = [](const json& groups) {
+  const Comparison m = compare_signals(in);
+  ASSERT_TRUE(m.parts.heldout);
+  EXPECT_EQ(m.parts.estimation.n + m.parts.heldout->n, 600);
+  const auto sum_n = [](const auto& groups) {
     long n = 0;
-    for (const auto& g : groups) n += g["n"].get<long>();
+    for (const auto& g : groups) n += g.metrics.n;
     return n;
   };
-  EXPECT_EQ(sum_n(m["by_amplitude"]), 600);
-  EXPECT_EQ(sum_n(m["by_time"]), 600);
-  EXPECT_EQ(m["by_time"].size(), 10u);
-  EXPECT_EQ(m["by_branch"]["loading"]["n"].get<long>() +
-                m["by_branch"]["unloading"]["n"].get<long>() +
-                m["by_branch"]["holding"]["n"].get<long>(),
-            600);
-  ASSERT_EQ(m["by_segment"].size(), 3u);
-  EXPECT_EQ(m["by_segment"][0]["part"], "estimation");
-  EXPECT_EQ(m["by_segment"][1]["part"], "mixed");
-  EXPECT_EQ(m["by_segment"][2]["part"], "heldout");
-  EXPECT_EQ(m["by_segment"][2]["segment"], "c");
+  EXPECT_EQ(sum_n(m.by_amplitude), 600);
+  EXPECT_EQ(sum_n(m.by_time), 600);
+  EXPECT_EQ(m.by_time.size(), 10u);
+  EXPECT_EQ(m.by_branch.loading.n + m.by_branch.unloading.n + m.by_branch.holding.n, 600);
+  ASSERT_EQ(m.by_segment.size(), 3u);
+  EXPECT_EQ(m.by_segment[0].part, "estimation");
+  EXPECT_EQ(m.by_segment[1].part, "mixed");
+  EXPECT_EQ(m.by_segment[2].part, "heldout");
+  EXPECT_EQ(m.by_segment[2].segment, "c");
 
   in.estimation.resize(0);  // nothing held out
-  EXPECT_FALSE(compare_signals(in).contains("heldout"));
+  const Comparison all_estimation = compare_signals(in);
+  EXPECT_FALSE(all_estimation.parts.heldout);
+  EXPECT_FALSE(to_json(all_estimation).contains("heldout"));
+  EXPECT_FALSE(to_json(all_estimation)["noise_floor"].contains("heldout_rmse_over_sigma"));
 }
 
 TEST(ComparisonSignals, BranchesFollowTheSignOfTheInputStep) {
@@ -185,12 +186,12 @@ TEST(ComparisonSignals, BranchesFollowTheSignOfTheInputStep) {
   in.u = vec({0, 1, 2, 3, 3, 3, 2, 1, 0});
   in.y = vec({0, 0, 0, 0, 0, 0, 1, 1, 1});  // error only while unloading
   in.y_model = Eigen::VectorXd::Zero(9);
-  const json b = compare_signals(in)["by_branch"];
-  EXPECT_EQ(b["loading"]["n"], 4);  // the first sample takes the branch of the second
-  EXPECT_EQ(b["holding"]["n"], 2);
-  EXPECT_EQ(b["unloading"]["n"], 3);
-  EXPECT_DOUBLE_EQ(b["unloading"]["rmse"].get<double>(), 1.0);
-  EXPECT_DOUBLE_EQ(b["loading"]["rmse"].get<double>(), 0.0);
+  const BranchErrors b = compare_signals(in).by_branch;
+  EXPECT_EQ(b.loading.n, 4);  // the first sample takes the branch of the second
+  EXPECT_EQ(b.holding.n, 2);
+  EXPECT_EQ(b.unloading.n, 3);
+  EXPECT_DOUBLE_EQ(b.unloading.rmse, 1.0);
+  EXPECT_DOUBLE_EQ(b.loading.rmse, 0.0);
 }
 
 // ---- correlation statistics -----------------------------------------------------
@@ -214,26 +215,26 @@ TEST(ComparisonCorrelation, WhiteResidualIsWhiteAndAutocorrelatedIsNot) {
   ComparisonInput in = sine_case(3000, 0.001, 3.0);
   const Eigen::VectorXd w = gaussian(3000, 0.05, 2026);
   in.y = in.y_model + w;
-  const json white = compare_signals(in)["residual"];
-  EXPECT_TRUE(white["white"].get<bool>());
-  EXPECT_GT(white["ljung_box"]["p_value"].get<double>(), 0.01);
-  EXPECT_EQ(white["ljung_box"]["lags"], 20);
-  EXPECT_NEAR(white["acf"]["bound"].get<double>(), 2.58 / std::sqrt(3000.0), 1e-12);
+  const ResidualAnalysis white = compare_signals(in).residual;
+  EXPECT_TRUE(white.white);
+  EXPECT_GT(white.ljung_box.p_value, 0.01);
+  EXPECT_EQ(white.ljung_box.lags, 20);
+  EXPECT_NEAR(white.acf.bound, 2.58 / std::sqrt(3000.0), 1e-12);
 
   Eigen::VectorXd ar = w;
   for (Eigen::Index k = 1; k < ar.size(); ++k) ar[k] = 0.9 * ar[k - 1] + w[k];
   in.y = in.y_model + ar;
-  const json coloured = compare_signals(in)["residual"];
-  EXPECT_FALSE(coloured["white"].get<bool>());
-  EXPECT_LT(coloured["ljung_box"]["p_value"].get<double>(), 1e-6);
-  EXPECT_NEAR(coloured["acf"]["values"][0].get<double>(), 0.9, 0.05);
-  EXPECT_EQ(coloured["acf"]["outside"], 25);
+  const ResidualAnalysis coloured = compare_signals(in).residual;
+  EXPECT_FALSE(coloured.white);
+  EXPECT_LT(coloured.ljung_box.p_value, 1e-6);
+  EXPECT_NEAR(coloured.acf.values[0], 0.9, 0.05);
+  EXPECT_EQ(coloured.acf.outside, 25);
 }
 
 TEST(ComparisonCorrelation, LjungBoxUsesAtMostAFifthOfTheSamples) {
   ComparisonInput in = sine_case(50, 0.01, 2.0);
   in.y += gaussian(50, 0.1, 3);
-  EXPECT_EQ(compare_signals(in)["residual"]["ljung_box"]["lags"], 10);
+  EXPECT_EQ(compare_signals(in).residual.ljung_box.lags, 10);
 }
 
 // ---- noise floor ----------------------------------------------------------------
@@ -316,10 +317,10 @@ TEST(ComparisonNoiseFloor, RepeatedSegmentLabelsCountAsPeriods) {
 TEST(ComparisonNoiseFloor, ReportedWithTheRmseRatio) {
   ComparisonInput in = sine_case(4000, 0.001, 2.0);
   in.y += gaussian(4000, 0.2, 5);
-  const json f = compare_signals(in)["noise_floor"];
-  EXPECT_EQ(f["method"], "periodic");  // 2 Hz at 1 kHz repeats every 500 samples
-  EXPECT_NEAR(f["sigma"].get<double>() / 0.2, 1.0, 0.10);
-  EXPECT_NEAR(f["rmse_over_sigma"].get<double>(), 1.0, 0.10);  // a perfect model
+  const ComparedNoiseFloor f = compare_signals(in).noise_floor;
+  EXPECT_EQ(f.method, "periodic");  // 2 Hz at 1 kHz repeats every 500 samples
+  EXPECT_NEAR(f.sigma / 0.2, 1.0, 0.10);
+  EXPECT_NEAR(f.rmse_over_sigma, 1.0, 0.10);  // a perfect model
 }
 
 // ---- signatures -------------------------------------------------------------------
@@ -333,7 +334,7 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
     in.y += gaussian(4000, 0.05, 99);
     return in;
   }();
-  const json clean = compare_signals(base)["signatures"];
+  const json clean = to_json(compare_signals(base).signatures);
   for (const char* effect : {"offset", "drift", "asymmetry", "backlash"})
     EXPECT_LT(std::abs(clean[effect]["value"].get<double>()), 0.2) << effect;
   for (auto it = clean.begin(); it != clean.end(); ++it) {
@@ -344,7 +345,7 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
   const auto with = [&](auto effect) {
     ComparisonInput in = base;
     effect(in);
-    return compare_signals(in)["signatures"];
+    return to_json(compare_signals(in).signatures);
   };
   const auto value = [](const json& signatures, const char* effect) {
     return signatures[effect]["value"].get<double>();
@@ -382,14 +383,14 @@ TEST(ComparisonSignatures, EachHiddenEffectRaisesItsOwnStatistic) {
 TEST(ComparisonReport, VerdictsFollowTheNumbers) {
   ComparisonInput in = sine_case(3000, 0.001, 2.0);
   in.y += gaussian(3000, 0.05, 21);
-  const json good = compare_signals(in);
+  const Comparison good = compare_signals(in);
   const std::string white = comparison_markdown(in, good, "t", "m", false, "");
   EXPECT_NE(white.find("the residual is white"), std::string::npos);
   EXPECT_NE(white.find("at the noise floor"), std::string::npos);
   EXPECT_EQ(white.find("!["), std::string::npos);  // no images to embed
 
   in.y += 0.3 * in.u.cwiseAbs2() / 100.0;  // a large missing even term
-  const json bad = compare_signals(in);
+  const Comparison bad = compare_signals(in);
   const std::string coloured = comparison_markdown(in, bad, "t", "m", true, "");
   EXPECT_NE(coloured.find("**not white**"), std::string::npos);
   EXPECT_NE(coloured.find("well above the noise floor"), std::string::npos);
@@ -413,12 +414,12 @@ TEST(ComparisonReport, WritesMetricsReportAndFigures) {
   for (Eigen::Index k = 1500; k < 3000; ++k) in.u[k] = 100 * std::sin(2 * kPi * 5.0 * in.t[k]);
   in.estimation = Eigen::VectorXd::Ones(3000);
   in.estimation.tail(1000).setZero();
-  const json m = compare_signals(in);
+  const Comparison m = compare_signals(in);
   const fs::path dir = tmp.path() / "compare";
   const auto files = write_comparison(dir, in, m, "Synthetic test", "hysteresis,msd");
   for (const auto& f : files) EXPECT_TRUE(fs::exists(f)) << f;
 
-  EXPECT_EQ(json::parse(read(dir / "metrics.json")), m);
+  EXPECT_EQ(read(dir / "metrics.json"), to_json(m).dump(2) + "\n");
   const std::string report = read(dir / "report.md");
   for (const char* part : {"# Synthetic test", "`hysteresis,msd`", "| held out |", "Noise floor",
                            "Ljung–Box", "sine\\|5Hz", "| loading |", "asymmetry", "residual.svg"})

@@ -137,11 +137,18 @@ TEST(Resonance, ASecondModeOnTheFirstModesFrequencyIsRecognised) {
 }
 
 // compare_signals-like residual statistics for the completeness tests.
-nlohmann::json where(double sigma, double p_value, int outside) {
-  return {{"noise_floor", {{"sigma", sigma}}},
-          {"residual", {{"ljung_box", {{"p_value", p_value}}},
-                        {"ccf", {{"outside", outside}, {"lags", std::vector<int>(51, 0)}}}}},
-          {"by_segment", {{{"segment", "a"}, {"rmse", 1.0}}, {{"segment", "b"}, {"rmse", 3.0}}}}};
+Comparison where(double sigma, double p_value, int outside) {
+  Comparison c;
+  c.noise_floor.sigma = sigma;
+  c.residual.ljung_box.p_value = p_value;
+  c.residual.ccf.outside = outside;
+  c.residual.ccf.lags.assign(51, 0);
+  for (const auto& [segment, rmse] : {std::pair{"a", 1.0}, {"b", 3.0}}) {
+    SegmentErrors s{segment, "estimation", {}};
+    s.metrics.rmse = rmse;
+    c.by_segment.push_back(s);
+  }
+  return c;
 }
 
 FitErrors errors(double estimation, double heldout) {

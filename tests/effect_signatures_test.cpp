@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -264,16 +265,24 @@ TEST(EffectSignatures, EveryRegisteredEffectIsCollectedAndWritten) {
   EXPECT_NE(sentence.find(" residual standard deviations"), std::string::npos) << sentence;
 }
 
+// One row per effect, in the order of the names (as metrics.json keys them).
 TEST(EffectSignatures, TheReportTableListsEveryEffect) {
   ComparisonInput in;
   in.t = times();
   in.u = sine(2);
   in.y_model = in.u;
   in.y = in.u + gaussian(0.1, 9);
-  const nlohmann::json m = compare_signals(in);
-  const std::string report = comparison_markdown(in, m, "t", "m", false, "");
-  for (const auto* info : EffectRegistry::instance().all())
-    EXPECT_NE(report.find("| `" + info->name + "` |"), std::string::npos) << info->name;
+  const std::string report = comparison_markdown(in, compare_signals(in), "t", "m", false, "");
+  std::vector<std::string> names;
+  for (const auto* info : EffectRegistry::instance().all()) names.push_back(info->name);
+  std::sort(names.begin(), names.end());
+  std::size_t previous = 0;
+  for (const auto& name : names) {
+    const std::size_t at = report.find("| `" + name + "` |");
+    ASSERT_NE(at, std::string::npos) << name;
+    EXPECT_GT(at, previous) << name;
+    previous = at;
+  }
 }
 
 TEST(EffectSignatures, EvidenceCitesTheCandidatesOwnStatistic) {
@@ -282,20 +291,21 @@ TEST(EffectSignatures, EvidenceCitesTheCandidatesOwnStatistic) {
   in.u = sine(2);
   in.y_model = in.u;
   in.y = in.u + 0.5 * in.t + gaussian(0.1, 10);
-  const nlohmann::json where = compare_signals(in);
+  const Comparison where = compare_signals(in);
   FitErrors before, after;
   before.rmse_estimation = 1.0;
   after.rmse_estimation = 0.1;
   const auto evidence = [&](const std::string& effect) {
     return evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
-                             signature_in(where, effect), before, after, -50, true, "µm");
+                             signature_in(where.signatures, effect), before, after, -50, true,
+                             "µm");
   };
   const std::string drift = evidence("drift"), msd = evidence("msd"), arx = evidence("arx");
   EXPECT_NE(drift.find("; here the residual correlates with time (r = 0.9"), std::string::npos)
       << drift;
-  EXPECT_NE(msd.find("; here " + where["signatures"]["msd"]["sentence"].get<std::string>()),
+  EXPECT_NE(msd.find("; here " + signature_in(where.signatures, "msd")->sentence),
             std::string::npos);
-  EXPECT_NE(arx.find("; here " + where["signatures"]["arx"]["sentence"].get<std::string>()),
+  EXPECT_NE(arx.find("; here " + signature_in(where.signatures, "arx")->sentence),
             std::string::npos);
   EXPECT_NE(msd.substr(msd.find("; here")), arx.substr(arx.find("; here")));
 }

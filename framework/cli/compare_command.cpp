@@ -48,27 +48,26 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
   return prepare_model_data(m, fit.scales, holdout);
 }
 
-double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+void print_part(const char* name, const ErrorMetrics& m, const std::string& unit) {
+  // fit % divides by the spread of y about its mean.
+  const std::string fit = std::isfinite(m.fit_percent) ? "fit " + quantity(m.fit_percent, "%")
+                                                       : "fit % not defined (y is constant)";
+  std::cout << "  " << name << ": RMSE " << quantity(m.rmse, unit) << ", " << fit << ", " << m.n
+            << " samples\n";
+}
 
-void print_headline(const nlohmann::json& metrics, const std::string& unit) {
+void print_headline(const Comparison& metrics, const std::string& unit) {
   // Without a hold-out every sample is an estimation sample: "all" says it.
-  const bool parts = metrics.contains("heldout");
-  for (const char* part : {"estimation", "heldout", "all"}) {
-    if (!metrics.contains(part) || (!parts && std::string(part) != "all")) continue;
-    const auto& m = metrics[part];
-    // fit % divides by the spread of y about its mean.
-    const std::string fit = m["fit_percent"].is_number()
-                                ? "fit " + quantity(number(m["fit_percent"]), "%")
-                                : "fit % not defined (y is constant)";
-    std::cout << "  " << part << ": RMSE " << quantity(number(m["rmse"]), unit) << ", " << fit
-              << ", " << m["n"].dump() << " samples\n";
+  if (metrics.parts.heldout) {
+    print_part("estimation", metrics.parts.estimation, unit);
+    print_part("heldout", *metrics.parts.heldout, unit);
   }
-  if (!metrics.contains("noise_floor")) return;
-  const auto& floor = metrics["noise_floor"];
-  if (floor["sigma"].is_number()) {
-    std::cout << "  estimated noise sigma " << quantity(number(floor["sigma"]), unit);
-    if (floor["rmse_over_sigma"].is_number())
-      std::cout << " (RMSE / sigma " << quantity(number(floor["rmse_over_sigma"]), "") << ")";
+  print_part("all", metrics.parts.all, unit);
+  const ComparedNoiseFloor& floor = metrics.noise_floor;
+  if (std::isfinite(floor.sigma)) {
+    std::cout << "  estimated noise sigma " << quantity(floor.sigma, unit);
+    if (std::isfinite(floor.rmse_over_sigma))
+      std::cout << " (RMSE / sigma " << quantity(floor.rmse_over_sigma, "") << ")";
     std::cout << "\n";
   } else {
     std::cout << "  noise sigma not estimated (fewer than " << kNoiseFloorFewestSamples

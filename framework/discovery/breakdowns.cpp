@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/segment_runs.hpp"
 
 namespace hystbench {
@@ -11,8 +10,8 @@ namespace {
 
 using Rows = std::vector<Eigen::Index>;
 
-nlohmann::json metrics(const BreakdownInput& in, const Rows& rows) {
-  return to_json(error_metrics(in.y, in.y_model, rows));
+ErrorMetrics metrics(const BreakdownInput& in, const Rows& rows) {
+  return error_metrics(in.y, in.y_model, rows);
 }
 
 std::string part_of(const BreakdownInput& in, const Rows& rows) {
@@ -22,64 +21,81 @@ std::string part_of(const BreakdownInput& in, const Rows& rows) {
   return estimation == 0 ? "heldout" : "mixed";
 }
 
-// Metrics first, then the group's own keys in front (nlohmann::json keeps
-// keys sorted; the order is for readers of the code only).
-nlohmann::json group(const BreakdownInput& in, const Rows& rows, nlohmann::json keys) {
-  keys.update(metrics(in, rows));
+// The group's own keys with its metrics (nlohmann::json keeps keys sorted;
+// the order is for readers of the code only).
+nlohmann::json group(nlohmann::json keys, const ErrorMetrics& m) {
+  keys.update(to_json(m));
   return keys;
 }
 
 }  // namespace
 
-nlohmann::json by_segment(const BreakdownInput& in) {
-  nlohmann::json out = nlohmann::json::array();
+std::vector<SegmentErrors> by_segment(const BreakdownInput& in) {
+  std::vector<SegmentErrors> out;
   for (const auto& label : distinct_labels(in.segment)) {
     Rows rows;
     for (std::size_t i = 0; i < in.segment.size(); ++i)
       if (in.segment[i] == label) rows.push_back(Eigen::Index(i));
-    out.push_back(group(in, rows, {{"segment", label}, {"part", part_of(in, rows)}}));
+    out.push_back({label, part_of(in, rows), metrics(in, rows)});
   }
   return out;
 }
 
-nlohmann::json by_amplitude(const BreakdownInput& in) {
+std::vector<AmplitudeErrors> by_amplitude(const BreakdownInput& in) {
   std::vector<double> edges;
   const auto bin = amplitude_bins(in.u, edges);
   std::vector<Rows> rows(kAmplitudeBins);
   for (std::size_t i = 0; i < bin.size(); ++i) rows[std::size_t(bin[i])].push_back(Eigen::Index(i));
-  nlohmann::json out = nlohmann::json::array();
+  std::vector<AmplitudeErrors> out;
   for (int b = 0; b < kAmplitudeBins; ++b)
-    out.push_back(group(in, rows[std::size_t(b)],
-                        {{"bin", b},
-                         {"u_low", finite_or_null(edges[std::size_t(b)])},
-                         {"u_high", finite_or_null(edges[std::size_t(b) + 1])}}));
+    out.push_back({b, edges[std::size_t(b)], edges[std::size_t(b) + 1],
+                   metrics(in, rows[std::size_t(b)])});
   return out;
 }
 
-nlohmann::json by_branch(const BreakdownInput& in) {
+BranchErrors by_branch(const BreakdownInput& in) {
   Rows loading, unloading, holding;
   const auto branch = branches(in.u);
   for (std::size_t i = 0; i < branch.size(); ++i)
     (branch[i] > 0 ? loading : branch[i] < 0 ? unloading : holding).push_back(Eigen::Index(i));
-  return {{"loading", metrics(in, loading)},
-          {"unloading", metrics(in, unloading)},
-          {"holding", metrics(in, holding)}};
+  return {metrics(in, loading), metrics(in, unloading), metrics(in, holding)};
 }
 
-nlohmann::json by_time(const BreakdownInput& in) {
+std::vector<TimeErrors> by_time(const BreakdownInput& in) {
   const Eigen::Index n = in.y.size();
   const Eigen::Index windows = std::min<Eigen::Index>(kTimeWindows, n);
-  nlohmann::json out = nlohmann::json::array();
+  std::vector<TimeErrors> out;
   for (Eigen::Index w = 0; w < windows; ++w) {
     const Eigen::Index begin = w * n / windows, end = (w + 1) * n / windows;
     Rows rows;
     for (Eigen::Index i = begin; i < end; ++i) rows.push_back(i);
-    out.push_back(group(in, rows,
-                        {{"window", w},
-                         {"t_start", finite_or_null(in.t[begin])},
-                         {"t_end", finite_or_null(in.t[end - 1])}}));
+    out.push_back({w, in.t[begin], in.t[end - 1], metrics(in, rows)});
   }
   return out;
+}
+
+nlohmann::json to_json(const SegmentErrors& g) {
+  return group({{"segment", g.segment}, {"part", g.part}}, g.metrics);
+}
+
+nlohmann::json to_json(const AmplitudeErrors& g) {
+  return group({{"bin", g.bin},
+                {"u_low", finite_or_null(g.u_low)},
+                {"u_high", finite_or_null(g.u_high)}},
+               g.metrics);
+}
+
+nlohmann::json to_json(const BranchErrors& b) {
+  return {{"loading", to_json(b.loading)},
+          {"unloading", to_json(b.unloading)},
+          {"holding", to_json(b.holding)}};
+}
+
+nlohmann::json to_json(const TimeErrors& g) {
+  return group({{"window", g.window},
+                {"t_start", finite_or_null(g.t_start)},
+                {"t_end", finite_or_null(g.t_end)}},
+               g.metrics);
 }
 
 }  // namespace hystbench

@@ -1,8 +1,7 @@
 #pragma once
 // Where the error sits: the error metrics (error_metrics.hpp) per group of
-// samples. Every group has the keys of to_json(ErrorMetrics) plus its own.
+// samples. In JSON every group has the keys of to_json(ErrorMetrics) plus its own.
 //
-//   by_part      "all", "estimation", "heldout" (absent when nothing is held out)
 //   by_segment   [{"segment", "part": "estimation"|"heldout"|"mixed", metrics}],
 //                labels in order of first appearance; empty without labels
 //   by_amplitude [{"bin", "u_low", "u_high", metrics}]: kAmplitudeBins equal-width
@@ -19,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/discovery/error_metrics.hpp"
 #include "framework/model/regressors.hpp"  // branches, amplitude_bins
 
 namespace hystbench {
@@ -34,9 +34,37 @@ struct BreakdownInput {
   const std::vector<bool>& estimation;      // one per sample
 };
 
-nlohmann::json by_segment(const BreakdownInput& in);
-nlohmann::json by_amplitude(const BreakdownInput& in);
-nlohmann::json by_branch(const BreakdownInput& in);
-nlohmann::json by_time(const BreakdownInput& in);
+struct SegmentErrors {
+  std::string segment;
+  std::string part;  // "estimation", "heldout" or "mixed"
+  ErrorMetrics metrics;
+};
+
+struct AmplitudeErrors {
+  int bin = 0;
+  double u_low = 0, u_high = 0;  // range of |u − mean(u)|, units of u
+  ErrorMetrics metrics;
+};
+
+struct BranchErrors {
+  ErrorMetrics loading, unloading, holding;
+};
+
+struct TimeErrors {
+  Eigen::Index window = 0;
+  double t_start = 0, t_end = 0;  // times of its first and last sample
+  ErrorMetrics metrics;
+};
+
+std::vector<SegmentErrors> by_segment(const BreakdownInput& in);
+std::vector<AmplitudeErrors> by_amplitude(const BreakdownInput& in);
+BranchErrors by_branch(const BreakdownInput& in);
+std::vector<TimeErrors> by_time(const BreakdownInput& in);
+
+// One group each, as listed above; NaN becomes null.
+nlohmann::json to_json(const SegmentErrors& g);
+nlohmann::json to_json(const AmplitudeErrors& g);
+nlohmann::json to_json(const BranchErrors& b);
+nlohmann::json to_json(const TimeErrors& g);
 
 }  // namespace hystbench

@@ -80,8 +80,7 @@ std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, 
     csv << c.effect << "," << gnuplot::number(c.after.rmse_estimation) << ","
         << gnuplot::number(c.after.rmse_heldout) << "\n";
   write_file_atomic(dir / "diagnosis_candidates.csv", csv.str());
-  const double sigma =
-      d.where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
+  const double sigma = d.where.noise_floor.sigma;
   const bool heldout = d.errors.n_heldout > 0;
   const std::string unit = y_unit.empty() ? "" : " [" + y_unit + "]";
   const std::string text =

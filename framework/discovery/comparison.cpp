@@ -3,12 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "framework/discovery/breakdowns.hpp"
-#include "framework/discovery/effect_signatures.hpp"
-#include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/excitation_frequency.hpp"
-#include "framework/discovery/noise_floor.hpp"
-#include "framework/stats/residual_correlation.hpp"
 
 namespace hystbench {
 namespace {
@@ -38,105 +33,146 @@ std::vector<bool> estimation_mask(const ComparisonInput& in) {
   return mask;
 }
 
+double branch_tolerance(const Eigen::VectorXd& u) {
+  double max_step = 0;
+  for (Eigen::Index k = 1; k < u.size(); ++k)
+    max_step = std::max(max_step, std::abs(u[k] - u[k - 1]));
+  return kHoldingTolerance * max_step;
+}
+
+ResidualAnalysis analyse_residual(const ComparisonInput& in, const Eigen::VectorXd& e, double ts) {
+  ResidualAnalysis r;
+  const auto n = e.size();
+  r.mean = n ? e.mean() : NAN;
+  r.std = n >= 2 ? std::sqrt((e.array() - r.mean).square().sum() / double(n - 1)) : NAN;
+  r.acf = autocorrelation(e, kCorrelationLags);
+  r.ccf = cross_correlation(in.u, e, kCorrelationLags);
+  r.peak_lag = peak_lag(r.ccf);
+  r.input_lag1_autocorrelation = autocorrelation(in.u, 1).values[0];
+  r.ljung_box = ljung_box(e, kLjungBoxLags);
+  r.white = std::isfinite(r.ljung_box.p_value) && r.ljung_box.p_value > kWhitenessLevel;
+  r.lowest_excitation_hz = lowest_excitation_frequency(in.u, in.segment, ts);
+  return r;
+}
+
+ComparedNoiseFloor compare_to_noise_floor(const NoiseFloor& f, const PartMetrics& parts) {
+  const auto ratio = [&](const ErrorMetrics& m) {
+    return std::isfinite(m.rmse) && f.sigma > 0 ? m.rmse / f.sigma : NAN;
+  };
+  return {f, ratio(parts.all), parts.heldout ? ratio(*parts.heldout) : NAN};
+}
+
+// ---- JSON ------------------------------------------------------------------
+
+template <class T>
+nlohmann::json list_json(const std::vector<T>& items) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& x : items) out.push_back(to_json(x));
+  return out;
+}
+
 nlohmann::json numbers(const std::vector<double>& v) {
   nlohmann::json out = nlohmann::json::array();
   for (double x : v) out.push_back(finite_or_null(x));
   return out;
 }
 
-nlohmann::json correlation_json(const Correlation& c) {
+nlohmann::json to_json(const Correlation& c) {
   return {{"lags", c.lags},
           {"values", numbers(c.values)},
           {"bound", finite_or_null(c.bound)},
           {"outside", c.outside}};
 }
 
-nlohmann::json residual_json(const Eigen::VectorXd& u, const Eigen::VectorXd& e,
-                             const Correlation& acf, const Correlation& ccf) {
-  const LjungBox lb = ljung_box(e, kLjungBoxLags);
-  const auto n = e.size();
-  const double mean = n ? e.mean() : NAN;
-  const double std = n >= 2 ? std::sqrt((e.array() - mean).square().sum() / double(n - 1)) : NAN;
-  nlohmann::json ccf_json = correlation_json(ccf);
-  ccf_json["peak_lag"] = peak_lag(ccf);
-  // A smooth (narrow-band) input spreads r_ue over many lags; readers need
-  // to know before taking the peak lag for a delay.
-  ccf_json["input_lag1_autocorrelation"] = finite_or_null(autocorrelation(u, 1).values[0]);
-  return {
-      {"computed_on", "whole record"},
-      {"mean", finite_or_null(mean)},
-      {"std", finite_or_null(std)},
-      {"acf", correlation_json(acf)},
-      {"ccf", ccf_json},
-      {"ljung_box",
-       {{"lags", lb.lags}, {"q", finite_or_null(lb.q)}, {"p_value", finite_or_null(lb.p_value)}}},
-      {"white", std::isfinite(lb.p_value) && lb.p_value > kWhitenessLevel}};
+nlohmann::json to_json(const ResidualAnalysis& r) {
+  nlohmann::json ccf = to_json(r.ccf);
+  ccf["peak_lag"] = r.peak_lag;
+  ccf["input_lag1_autocorrelation"] = finite_or_null(r.input_lag1_autocorrelation);
+  const LjungBox& lb = r.ljung_box;
+  return {{"computed_on", "whole record"},
+          {"mean", finite_or_null(r.mean)},
+          {"std", finite_or_null(r.std)},
+          {"acf", to_json(r.acf)},
+          {"ccf", ccf},
+          {"ljung_box",
+           {{"lags", lb.lags},
+            {"q", finite_or_null(lb.q)},
+            {"p_value", finite_or_null(lb.p_value)}}},
+          {"white", r.white},
+          {"lowest_excitation_hz", finite_or_null(r.lowest_excitation_hz)}};
 }
 
-nlohmann::json noise_json(const NoiseFloor& f, const nlohmann::json& all,
-                          const nlohmann::json& heldout) {
-  const auto ratio = [&](const nlohmann::json& m) {
-    return m["rmse"].is_number() && f.sigma > 0 ? finite_or_null(m["rmse"].get<double>() / f.sigma)
-                                                : nlohmann::json();
-  };
+nlohmann::json to_json(const ComparedNoiseFloor& f, bool heldout) {
   nlohmann::json out = {{"sigma", finite_or_null(f.sigma)},
                         {"method", f.method},
-                        {"rmse_over_sigma", ratio(all)},
+                        {"rmse_over_sigma", finite_or_null(f.rmse_over_sigma)},
                         {"pairs", f.pairs},
                         {"period", f.period},
                         {"order", f.order}};
-  if (!heldout.is_null()) out["heldout_rmse_over_sigma"] = ratio(heldout);
+  if (heldout) out["heldout_rmse_over_sigma"] = finite_or_null(f.heldout_rmse_over_sigma);
   return out;
 }
 
 }  // namespace
 
-nlohmann::json part_metrics(const ComparisonInput& in) {
+PartMetrics part_metrics(const ComparisonInput& in) {
   check_lengths(in);
   const auto mask = estimation_mask(in);
   std::vector<Eigen::Index> estimation, heldout;
   for (std::size_t i = 0; i < mask.size(); ++i)
     (mask[i] ? estimation : heldout).push_back(Eigen::Index(i));
-  nlohmann::json out;
-  out["all"] = to_json(error_metrics(in.y, in.y_model));
-  out["estimation"] = to_json(error_metrics(in.y, in.y_model, estimation));
-  if (!heldout.empty()) out["heldout"] = to_json(error_metrics(in.y, in.y_model, heldout));
+  PartMetrics out{error_metrics(in.y, in.y_model), error_metrics(in.y, in.y_model, estimation), {}};
+  if (!heldout.empty()) out.heldout = error_metrics(in.y, in.y_model, heldout);
   return out;
 }
 
-nlohmann::json compare_signals(const ComparisonInput& in) {
-  check_lengths(in);
-  const double ts = sample_time(in);
+Comparison compare_signals(const ComparisonInput& in) {
+  Comparison c;
+  c.parts = part_metrics(in);  // checks the lengths
+  c.n = in.t.size();
+  c.sample_time = sample_time(in);
   const auto mask = estimation_mask(in);
   const BreakdownInput parts{in.t, in.u, in.y, in.y_model, in.segment, mask};
+  c.by_segment = by_segment(parts);
+  c.by_amplitude = by_amplitude(parts);
+  c.u_mean = in.u.size() ? in.u.mean() : NAN;
+  c.by_branch = by_branch(parts);
+  c.branch_tolerance = branch_tolerance(in.u);
+  c.by_time = by_time(parts);
 
-  nlohmann::json out = part_metrics(in);
-  out["n"] = in.t.size();
-  out["sample_time"] = finite_or_null(ts);
+  const Eigen::VectorXd e = in.y - in.y_model;
+  c.residual = analyse_residual(in, e, c.sample_time);
+  c.noise_floor = compare_to_noise_floor(estimate_noise_floor(in.u, in.y, in.segment), c.parts);
+  const ResidualAnalysis& r = c.residual;
+  c.signatures = effect_signatures(
+      {in.t, in.u, in.y_model, e, in.segment, c.sample_time, r.ccf, r.lowest_excitation_hz});
+  return c;
+}
 
-  out["by_segment"] = by_segment(parts);
-  out["by_amplitude"] = by_amplitude(parts);
+nlohmann::json to_json(const PartMetrics& parts) {
+  nlohmann::json out;
+  out["all"] = to_json(parts.all);
+  out["estimation"] = to_json(parts.estimation);
+  if (parts.heldout) out["heldout"] = to_json(*parts.heldout);
+  return out;
+}
+
+nlohmann::json to_json(const Comparison& c) {
+  nlohmann::json out = to_json(c.parts);
+  out["n"] = c.n;
+  out["sample_time"] = finite_or_null(c.sample_time);
+  out["by_segment"] = list_json(c.by_segment);
+  out["by_amplitude"] = list_json(c.by_amplitude);
   out["amplitude_binning"] = {{"quantity", "|u - mean(u)|"},
                               {"spacing", "equal width"},
                               {"bins", kAmplitudeBins},
-                              {"u_mean", finite_or_null(in.u.size() ? in.u.mean() : NAN)}};
-  out["by_branch"] = by_branch(parts);
-  double max_step = 0;
-  for (Eigen::Index k = 1; k < in.u.size(); ++k)
-    max_step = std::max(max_step, std::abs(in.u[k] - in.u[k - 1]));
-  out["branch_tolerance"] = finite_or_null(kHoldingTolerance * max_step);
-  out["by_time"] = by_time(parts);
-
-  const Eigen::VectorXd e = in.y - in.y_model;
-  const Correlation acf = autocorrelation(e, kCorrelationLags);
-  const Correlation ccf = cross_correlation(in.u, e, kCorrelationLags);
-  const double f_low = lowest_excitation_frequency(in.u, in.segment, ts);
-  out["residual"] = residual_json(in.u, e, acf, ccf);
-  out["residual"]["lowest_excitation_hz"] = finite_or_null(f_low);
-  out["noise_floor"] = noise_json(estimate_noise_floor(in.u, in.y, in.segment), out["all"],
-                                  out.contains("heldout") ? out["heldout"] : nlohmann::json());
-  out["signatures"] =
-      to_json(effect_signatures({in.t, in.u, in.y_model, e, in.segment, ts, ccf, f_low}));
+                              {"u_mean", finite_or_null(c.u_mean)}};
+  out["by_branch"] = to_json(c.by_branch);
+  out["branch_tolerance"] = finite_or_null(c.branch_tolerance);
+  out["by_time"] = list_json(c.by_time);
+  out["residual"] = to_json(c.residual);
+  out["noise_floor"] = to_json(c.noise_floor, c.parts.heldout.has_value());
+  out["signatures"] = to_json(c.signatures);
   return out;
 }
 

@@ -28,10 +28,6 @@ std::string with_unit(const std::string& text, const std::string& unit) {
   return unit.empty() ? text : text + " [" + unit + "]";
 }
 
-double json_number(const nlohmann::json& j) {
-  return j.is_number() ? j.get<double>() : std::nan("");
-}
-
 // gnuplot data files take double-quoted strings; a quote inside becomes '.
 std::string data_string(std::string s) {
   std::replace(s.begin(), s.end(), '"', '\'');
@@ -84,14 +80,14 @@ std::string residual_marks(const ComparisonInput& in) {
   return out;
 }
 
-fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const nlohmann::json& m,
+fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const Comparison& m,
                          const std::string& title) {
   std::string data = "# t residual\n";
   for (Eigen::Index i = 0; i < in.t.size(); ++i)
     data += gp::number(in.t[i]) + " " + gp::number(in.y[i] - in.y_model[i]) + "\n";
   write_file_atomic(dir / "residual.dat", data);
-  const double sigma = json_number(m["noise_floor"]["sigma"]);
-  const bool has_heldout = m.contains("heldout");
+  const double sigma = m.noise_floor.sigma;
+  const bool has_heldout = m.parts.heldout.has_value();
   std::string body = "  plot \"residual.dat\" using 1:2 with lines lw 1 lc rgb \"" +
                      std::string(kResidualColour) + "\" title \"residual y − ŷ\"";
   if (std::isfinite(sigma) && sigma > 0)
@@ -125,22 +121,22 @@ const char* part_colour(const std::string& part) {
   return part == "heldout" ? kHeldoutColour : part == "mixed" ? kMixedColour : kEstimationColour;
 }
 
-fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const nlohmann::json& m,
+fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Comparison& m,
                         const std::string& title) {
-  const auto& segs = m["by_segment"];
+  const auto& segs = m.by_segment;
   std::string data = "# index segment rmse part\n";
   bool seen[3] = {false, false, false};
   for (std::size_t k = 0; k < segs.size(); ++k) {
-    const std::string part = segs[k]["part"];
+    const std::string& part = segs[k].part;
     seen[part == "estimation" ? 0 : part == "heldout" ? 1 : 2] = true;
-    data += std::to_string(k) + " " + data_string(segs[k]["segment"]) + " " +
-            gp::number(json_number(segs[k]["rmse"])) + " " + part + "\n";
+    data += std::to_string(k) + " " + data_string(segs[k].segment) + " " +
+            gp::number(segs[k].metrics.rmse) + " " + part + "\n";
   }
   if (segs.empty())
-    data += "0 \"all\" " + gp::number(json_number(m["all"]["rmse"])) + " estimation\n";
+    data += "0 \"all\" " + gp::number(m.parts.all.rmse) + " estimation\n";
   write_file_atomic(dir / "segment_rmse.dat", data);
   const std::size_t bars = std::max<std::size_t>(1, segs.size());
-  const double sigma = json_number(m["noise_floor"]["sigma"]);
+  const double sigma = m.noise_floor.sigma;
   std::string body = "  plot ";
   const char* parts[] = {"estimation", "heldout", "mixed"};
   const char* names[] = {"estimation", "held out", "mixed"};
@@ -183,18 +179,17 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const nl
 
 // ---- correlations --------------------------------------------------------------
 
-double plot_limit(const nlohmann::json& c) {
-  double m = json_number(c["bound"]);
-  for (const auto& v : c["values"])
-    if (v.is_number()) m = std::max(m, std::abs(v.get<double>()));
+double plot_limit(const Correlation& c) {
+  double m = c.bound;
+  for (double v : c.values)
+    if (std::isfinite(v)) m = std::max(m, std::abs(v));
   return std::isfinite(m) && m > 0 ? std::min(1.0, 1.15 * m) : 1.0;
 }
 
-std::string correlation_block(const nlohmann::json& c, const std::string& what) {
+std::string correlation_block(const Correlation& c, const std::string& what) {
   std::string out = "# " + what + ": lag value\n";
-  for (std::size_t i = 0; i < c["lags"].size(); ++i)
-    out += std::to_string(c["lags"][i].get<int>()) + " " + gp::number(json_number(c["values"][i])) +
-           "\n";
+  for (std::size_t i = 0; i < c.lags.size(); ++i)
+    out += std::to_string(c.lags[i]) + " " + gp::number(c.values[i]) + "\n";
   return out;
 }
 
@@ -213,14 +208,14 @@ std::string correlation_panel(const std::string& title, int index, const std::st
          "       0 with lines lw 1 lc rgb \"#404040\" notitle\n";
 }
 
-fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m,
+fs::path correlation_figure(const fs::path& dir, const Comparison& m,
                             const std::string& title) {
-  const auto& acf = m["residual"]["acf"];
-  const auto& ccf = m["residual"]["ccf"];
+  const Correlation& acf = m.residual.acf;
+  const Correlation& ccf = m.residual.ccf;
   write_file_atomic(dir / "correlation.dat",
                     correlation_block(acf, "index 0: residual autocorrelation") + "\n\n" +
                         correlation_block(ccf, "index 1: input-residual cross-correlation"));
-  const int lags = int(acf["lags"].size());
+  const int lags = int(acf.lags.size());
   const std::string body =
       "  set multiplot layout 2, 1 title " + gp::quoted("Residual tests — " + title) +
       " noenhanced\n" +
@@ -236,8 +231,8 @@ fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m,
                  "residual autocorrelation (top) and input-residual "
                  "cross-correlation\n# (bottom) with the 99 % band ±2.58/√N",
                  "correlation.dat (index 0: ACF, index 1: CCF; lag value)") +
-      "acf_bound = " + gp::number(json_number(acf["bound"])) + "\n" +
-      "ccf_bound = " + gp::number(json_number(ccf["bound"])) + "\n" +
+      "acf_bound = " + gp::number(acf.bound) + "\n" +
+      "ccf_bound = " + gp::number(ccf.bound) + "\n" +
       "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\nset key top right opaque samplen 2\n"
       "set ylabel \"Correlation\"\nset xtics 5\nset mxtics 5\n" +
       gp::render_all_terminals("correlation", body, true);
@@ -247,7 +242,7 @@ fs::path correlation_figure(const fs::path& dir, const nlohmann::json& m,
 }  // namespace
 
 FigureFiles write_comparison_figures(const fs::path& dir, const ComparisonInput& in,
-                                     const nlohmann::json& metrics, const std::string& title) {
+                                     const Comparison& metrics, const std::string& title) {
   FigureFiles files;
   ReportContext ctx;
   ctx.problem = title;

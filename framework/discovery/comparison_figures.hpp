@@ -11,7 +11,6 @@
 //   correlation.gp      residual autocorrelation (lags 1..25) and input–residual
 //                       cross-correlation (−25..25) with the 99 % band
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,6 +24,6 @@ struct FigureFiles {
 
 // `metrics` is compare_signals(in). `title` heads the figures.
 FigureFiles write_comparison_figures(const std::filesystem::path& dir, const ComparisonInput& in,
-                                     const nlohmann::json& metrics, const std::string& title);
+                                     const Comparison& metrics, const std::string& title);
 
 }  // namespace hystbench

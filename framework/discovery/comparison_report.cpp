@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "framework/discovery/comparison_figures.hpp"
 #include "framework/discovery/noise_floor.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
+#include "framework/report/markdown.hpp"
 
 namespace hystbench {
 namespace fs = std::filesystem;
 namespace {
-
-using nlohmann::json;
 
 // Verdict thresholds on RMSE / σ.
 constexpr double kAtNoiseFloor = 1.1;
@@ -22,15 +20,10 @@ constexpr std::size_t kWorstSegments = 10;
 // r_uu(1) above this: the input is too smooth for the CCF peak lag to mean a delay.
 constexpr double kSmoothInput = 0.9;
 
-std::string num(const json& j) {
-  if (j.is_number_integer()) return std::to_string(j.get<long long>());
-  if (!j.is_number()) return "–";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", j.get<double>());
-  return buf;
-}
+using markdown::num;
 
-std::string num(double x) { return num(std::isfinite(x) ? json(x) : json()); }
+// Counts (samples, lags, bins) print in full, not as %.4g.
+std::string count(long long n) { return std::to_string(n); }
 
 std::string cell(std::string s) {
   std::string out;
@@ -47,11 +40,7 @@ std::string with_unit(const std::string& number, const std::string& u) {
   return u.empty() ? number : number + " " + u;
 }
 
-std::string p_text(const json& p) {
-  return p.is_number() && p.get<double>() < 1e-4 ? "< 0.0001" : num(p);
-}
-
-double value(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+std::string p_text(double p) { return p < 1e-4 ? "< 0.0001" : num(p); }
 
 std::string row(const std::vector<std::string>& cells) {
   std::string out = "|";
@@ -68,54 +57,53 @@ std::string header_row(const std::vector<std::string>& cells, bool text_last = f
   return row(cells) + rule + "\n";
 }
 
-std::string ratio_to_sigma(const json& rmse, const json& metrics) {
-  const double sigma = value(metrics["noise_floor"]["sigma"]);
-  return sigma > 0 ? num(value(rmse) / sigma) : "–";
+std::string ratio_to_sigma(double rmse, const Comparison& m) {
+  const double sigma = m.noise_floor.sigma;
+  return sigma > 0 ? num(rmse / sigma) : "–";
 }
 
 // ---- sections ------------------------------------------------------------------
 
-std::string headline(const ComparisonInput& in, const json& m) {
+std::string headline(const ComparisonInput& in, const Comparison& m) {
   const std::string yu = unit(in.y_unit);
   std::string out =
       "## Headline\n\n" + header_row({"part", "samples", "RMSE" + yu, "fit %", "relative error",
                                       "max \\|error\\|" + yu, "mean error" + yu, "RMSE / noise σ"});
-  for (const char* part : {"estimation", "heldout", "all"}) {
-    if (!m.contains(part)) continue;
-    const json& p = m[part];
-    out += row({std::string(part) == "heldout" ? "held out" : part, num(p["n"]), num(p["rmse"]),
-                num(p["fit_percent"]), num(p["relative_error"]), num(p["max_abs_error"]),
-                num(p["mean_error"]), ratio_to_sigma(p["rmse"], m)});
-  }
+  const auto part = [&](const char* name, const ErrorMetrics& p) {
+    out += row({name, count(p.n), num(p.rmse), num(p.fit_percent), num(p.relative_error),
+                num(p.max_abs_error), num(p.mean_error), ratio_to_sigma(p.rmse, m)});
+  };
+  part("estimation", m.parts.estimation);
+  if (m.parts.heldout) part("held out", *m.parts.heldout);
+  part("all", m.parts.all);
   out +=
       "\nfit % = 100 (1 − ‖y − ŷ‖ / ‖y − ȳ‖); relative error = ‖y − ŷ‖ / ‖y‖. "
       "Errors in units of y" +
       (in.y_unit.empty() ? std::string() : " (" + in.y_unit + ")") +
       ". The model output ŷ is taken as given (normally simulated over the whole record).\n";
-  if (!m.contains("heldout"))
+  if (!m.parts.heldout)
     out += "No samples were held out: every number is on estimation data.\n";
   return out + "\n";
 }
 
-std::string noise_floor(const ComparisonInput& in, const json& m) {
-  const json& f = m["noise_floor"];
-  std::string method = f["method"];
+std::string noise_floor(const ComparisonInput& in, const Comparison& m) {
+  const ComparedNoiseFloor& f = m.noise_floor;
   std::string how;
-  if (method == "periodic")
+  if (f.method == "periodic")
     how = "from repeated periods of the excitation, σ = RMS(y_p − y_{p+1})/√2 over " +
-          num(f["pairs"]) + " sample pairs" +
-          (value(f["period"]) > 0 ? " (period " + num(f["period"]) + " samples)"
-                                  : std::string(" (repeated segments)"));
-  else if (method == "difference_mad")
+          count(f.pairs) + " sample pairs" +
+          (f.period > 0 ? " (period " + count(f.period) + " samples)"
+                        : std::string(" (repeated segments)"));
+  else if (f.method == "difference_mad")
     how =
         "from high-order differences of y (no repeated periods found): robust (MAD) estimate, "
         "lowest over orders 2–6 (order " +
-        num(f["order"]) + ")";
+        count(f.order) + ")";
   else
     how = "not estimated (fewer than " + std::to_string(kNoiseFloorFewestSamples) + " samples)";
   std::string out =
-      "## Noise floor\n\nσ = " + with_unit(num(f["sigma"]), in.y_unit) + ", " + how + ".\n\n";
-  const double r = value(f["rmse_over_sigma"]);
+      "## Noise floor\n\nσ = " + with_unit(num(f.sigma), in.y_unit) + ", " + how + ".\n\n";
+  const double r = f.rmse_over_sigma;
   if (!std::isfinite(r))
     out += "RMSE / σ is undefined.\n";
   else if (r <= kAtNoiseFloor)
@@ -131,49 +119,49 @@ std::string noise_floor(const ComparisonInput& in, const json& m) {
 }
 
 // r_ue at lag τ; 0 outside the lags computed.
-double ccf_at(const json& ccf, int tau) {
-  for (std::size_t i = 0; i < ccf["lags"].size(); ++i)
-    if (ccf["lags"][i] == tau) return value(ccf["values"][i]);
+double ccf_at(const Correlation& ccf, int tau) {
+  for (std::size_t i = 0; i < ccf.lags.size(); ++i)
+    if (ccf.lags[i] == tau) return ccf.values[i];
   return 0.0;
 }
 
 // A peak that falls below half its height within three lags on either
 // side: a delay rather than a broad dynamic response.
-bool single_peak(const json& ccf, int lag) {
+bool single_peak(const Correlation& ccf, int lag) {
   const double peak = std::abs(ccf_at(ccf, lag));
   return std::abs(ccf_at(ccf, lag - 3)) < 0.5 * peak &&
          std::abs(ccf_at(ccf, lag + 3)) < 0.5 * peak;
 }
 
-std::string correlation_verdict(const json& m, double ts) {
-  const json& r = m["residual"];
-  const json& lb = r["ljung_box"];
+std::string correlation_verdict(const Comparison& m, double ts) {
+  const ResidualAnalysis& r = m.residual;
+  const LjungBox& lb = r.ljung_box;
   std::string out =
       "## Residual tests\n\nComputed on the residual e = y − ŷ of the whole record "
       "(estimation and held-out samples together), N = " +
-      num(m["n"]) + ".\n\n";
-  const int acf_out = r["acf"]["outside"];
-  if (r["white"].get<bool>())
-    out += "- **Whiteness**: the residual is white (Ljung–Box Q = " + num(lb["q"]) + " over " +
-           num(lb["lags"]) + " lags, p = " + p_text(lb["p_value"]) + " > 0.01); " +
-           std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
-           " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
+      count(m.n) + ".\n\n";
+  const int acf_out = r.acf.outside;
+  if (r.white)
+    out += "- **Whiteness**: the residual is white (Ljung–Box Q = " + num(lb.q) + " over " +
+           count(lb.lags) + " lags, p = " + p_text(lb.p_value) + " > 0.01); " +
+           std::to_string(acf_out) + " of " + std::to_string(r.acf.lags.size()) +
+           " autocorrelation lags lie outside the 99 % band ±" + num(r.acf.bound) + ".\n";
   else
-    out += "- **Whiteness**: the residual is **not white** (Ljung–Box Q = " + num(lb["q"]) +
-           " over " + num(lb["lags"]) + " lags, p " + p_text(lb["p_value"]) +
+    out += "- **Whiteness**: the residual is **not white** (Ljung–Box Q = " + num(lb.q) +
+           " over " + count(lb.lags) + " lags, p " + p_text(lb.p_value) +
            " ≤ 0.01): it still has structure "
            "in time; " +
-           std::to_string(acf_out) + " of " + std::to_string(r["acf"]["lags"].size()) +
-           " autocorrelation lags lie outside the 99 % band ±" + num(r["acf"]["bound"]) + ".\n";
-  const json& c = m["residual"]["ccf"];
-  const int outside = c["outside"], lag = c["peak_lag"];
+           std::to_string(acf_out) + " of " + std::to_string(r.acf.lags.size()) +
+           " autocorrelation lags lie outside the 99 % band ±" + num(r.acf.bound) + ".\n";
+  const Correlation& c = r.ccf;
+  const int outside = c.outside, lag = r.peak_lag;
   const double peak = ccf_at(c, lag);
   out += "- **Input–residual cross-correlation**: " + std::to_string(outside) + " of " +
-         std::to_string(c["lags"].size()) + " lags lie outside the 99 % band ±" + num(c["bound"]) +
-         " (about " + num(0.01 * double(c["lags"].size())) +
+         std::to_string(c.lags.size()) + " lags lie outside the 99 % band ±" + num(c.bound) +
+         " (about " + num(0.01 * double(c.lags.size())) +
          " expected by chance); the largest is r = " + num(peak) +
          " at τ = " + std::to_string(lag) + ". ";
-  const double smooth = value(c["input_lag1_autocorrelation"]);
+  const double smooth = r.input_lag1_autocorrelation;
   const bool narrow_band = smooth > kSmoothInput;
   if (outside <= 1)
     out += "The residual is independent of the input within the band.\n";
@@ -199,12 +187,13 @@ std::string correlation_verdict(const json& m, double ts) {
   return out + "\n";
 }
 
-std::string segment_table(const ComparisonInput& in, const json& m) {
-  std::vector<json> segs(m["by_segment"].begin(), m["by_segment"].end());
+std::string segment_table(const ComparisonInput& in, const Comparison& m) {
+  std::vector<SegmentErrors> segs = m.by_segment;
   if (segs.empty()) return "";
-  std::stable_sort(segs.begin(), segs.end(), [](const json& a, const json& b) {
-    return value(a["rmse"]) > value(b["rmse"]) ||
-           (std::isnan(value(b["rmse"])) && !std::isnan(value(a["rmse"])));
+  // Largest RMSE first; segments without one last.
+  std::stable_sort(segs.begin(), segs.end(), [](const SegmentErrors& a, const SegmentErrors& b) {
+    const double ra = a.metrics.rmse, rb = b.metrics.rmse;
+    return std::isfinite(ra) && (!std::isfinite(rb) || ra > rb);
   });
   const std::size_t shown = std::min(segs.size(), kWorstSegments);
   const std::string yu = unit(in.y_unit);
@@ -216,104 +205,106 @@ std::string segment_table(const ComparisonInput& in, const json& m) {
                     header_row({"segment", "part", "samples", "RMSE" + yu, "fit %",
                                 "max \\|error\\|" + yu, "RMSE / σ"});
   for (std::size_t k = 0; k < shown; ++k) {
-    const json& s = segs[k];
-    out +=
-        row({cell(s["segment"]), s["part"] == "heldout" ? "held out" : s["part"].get<std::string>(),
-             num(s["n"]), num(s["rmse"]), num(s["fit_percent"]), num(s["max_abs_error"]),
-             ratio_to_sigma(s["rmse"], m)});
+    const SegmentErrors& s = segs[k];
+    const ErrorMetrics& e = s.metrics;
+    out += row({cell(s.segment), s.part == "heldout" ? "held out" : s.part, count(e.n),
+                num(e.rmse), num(e.fit_percent), num(e.max_abs_error), ratio_to_sigma(e.rmse, m)});
   }
   return out + "\n";
 }
 
-std::string amplitude_table(const ComparisonInput& in, const json& m) {
-  const double total = value(m["all"]["sse"]);
+std::string amplitude_table(const ComparisonInput& in, const Comparison& m) {
+  const double total = m.parts.all.sse;
   const std::string uu = unit(in.u_unit), yu = unit(in.y_unit);
   std::string out = "### Input amplitude |u − mean u| (mean u = " +
-                    with_unit(num(m["amplitude_binning"]["u_mean"]), in.u_unit) +
+                    with_unit(num(m.u_mean), in.u_unit) +
                     "; equal-width bins)\n\n" +
                     header_row({"bin", "\\|u − mean u\\|" + uu, "samples", "RMSE" + yu,
                                 "share of samples", "share of SSE"});
-  const double n = value(m["n"]);
-  for (const json& b : m["by_amplitude"])
-    out +=
-        row({num(b["bin"]), num(b["u_low"]) + " – " + num(b["u_high"]), num(b["n"]), num(b["rmse"]),
-             num(value(b["n"]) / n), total > 0 ? num(value(b["sse"]) / total) : "–"});
+  const double n = double(m.n);
+  for (const AmplitudeErrors& b : m.by_amplitude)
+    out += row({count(b.bin), num(b.u_low) + " – " + num(b.u_high), count(b.metrics.n),
+                num(b.metrics.rmse), num(double(b.metrics.n) / n),
+                total > 0 ? num(b.metrics.sse / total) : "–"});
   return out + "\n";
 }
 
-std::string branch_table(const ComparisonInput& in, const json& m) {
+std::string branch_table(const ComparisonInput& in, const Comparison& m) {
   const std::string yu = unit(in.y_unit);
   std::string out =
       "### Branch (loading Δu > 0, unloading Δu < 0, holding |Δu| ≤ " +
-      with_unit(num(m["branch_tolerance"]), in.u_unit) + ")\n\n" +
+      with_unit(num(m.branch_tolerance), in.u_unit) + ")\n\n" +
       header_row({"branch", "samples", "RMSE" + yu, "mean error" + yu, "max \\|error\\|" + yu});
-  for (const char* b : {"loading", "unloading", "holding"}) {
-    const json& g = m["by_branch"][b];
-    out += row({b, num(g["n"]), num(g["rmse"]), num(g["mean_error"]), num(g["max_abs_error"])});
-  }
+  const auto branch = [&](const char* name, const ErrorMetrics& g) {
+    out += row({name, count(g.n), num(g.rmse), num(g.mean_error), num(g.max_abs_error)});
+  };
+  branch("loading", m.by_branch.loading);
+  branch("unloading", m.by_branch.unloading);
+  branch("holding", m.by_branch.holding);
   return out + "\n";
 }
 
-std::string time_table(const ComparisonInput& in, const json& m) {
+std::string time_table(const ComparisonInput& in, const Comparison& m) {
   double worst = -1;
-  for (const json& w : m["by_time"]) worst = std::max(worst, value(w["rmse"]));
+  for (const TimeErrors& w : m.by_time) worst = std::max(worst, w.metrics.rmse);
   const std::string yu = unit(in.y_unit);
   std::string out = "### Time windows (worst in bold)\n\n" +
                     header_row({"window", "t [s]", "samples", "RMSE" + yu, "mean error" + yu});
-  for (const json& w : m["by_time"]) {
-    const bool bold = value(w["rmse"]) == worst;
-    const std::string rmse = bold ? "**" + num(w["rmse"]) + "**" : num(w["rmse"]);
-    out += row({num(w["window"]), num(w["t_start"]) + " – " + num(w["t_end"]), num(w["n"]), rmse,
-                num(w["mean_error"])});
+  for (const TimeErrors& w : m.by_time) {
+    const ErrorMetrics& e = w.metrics;
+    const std::string rmse = e.rmse == worst ? "**" + num(e.rmse) + "**" : num(e.rmse);
+    out += row({count(w.window), num(w.t_start) + " – " + num(w.t_end), count(e.n), rmse,
+                num(e.mean_error)});
   }
   return out + "\n";
 }
 
+// "- Worst segment: ..." when two or more segments have an RMSE.
+std::string worst_segment(const ComparisonInput& in, const Comparison& m) {
+  if (m.by_segment.size() < 2) return "";
+  const SegmentErrors* worst = nullptr;
+  std::vector<double> rmse;
+  for (const SegmentErrors& s : m.by_segment)
+    if (std::isfinite(s.metrics.rmse)) {
+      rmse.push_back(s.metrics.rmse);
+      if (!worst || s.metrics.rmse > worst->metrics.rmse) worst = &s;
+    }
+  std::sort(rmse.begin(), rmse.end());
+  if (!worst || rmse.empty() || !(rmse[rmse.size() / 2] > 0)) return "";
+  return "- Worst segment: " + cell(worst->segment) + " (RMSE " +
+         with_unit(num(worst->metrics.rmse), in.y_unit) + ", " +
+         num(worst->metrics.rmse / rmse[rmse.size() / 2]) + "× the median segment).\n";
+}
+
 // Plain sentences over the breakdown tables that follow.
-std::string failure_summary(const ComparisonInput& in, const json& m) {
-  std::string out;
-  const auto& segs = m["by_segment"];
-  if (segs.size() >= 2) {
-    const json* worst = nullptr;
-    std::vector<double> rmse;
-    for (const json& s : segs)
-      if (s["rmse"].is_number()) {
-        rmse.push_back(value(s["rmse"]));
-        if (!worst || value(s["rmse"]) > value((*worst)["rmse"])) worst = &s;
-      }
-    std::sort(rmse.begin(), rmse.end());
-    if (worst && !rmse.empty() && rmse[rmse.size() / 2] > 0)
-      out += "- Worst segment: " + cell((*worst)["segment"]) + " (RMSE " +
-             with_unit(num((*worst)["rmse"]), in.y_unit) + ", " +
-             num(value((*worst)["rmse"]) / rmse[rmse.size() / 2]) + "× the median segment).\n";
-  }
-  const json& top = m["by_amplitude"].back();
-  const double total = value(m["all"]["sse"]), n = value(m["n"]);
+std::string failure_summary(const ComparisonInput& in, const Comparison& m) {
+  std::string out = worst_segment(in, m);
+  const ErrorMetrics& top = m.by_amplitude.back().metrics;
+  const double total = m.parts.all.sse, n = double(m.n);
   if (total > 0 && n > 0)
-    out += "- The largest input amplitudes (top bin) hold " + num(100 * value(top["n"]) / n) +
-           " % of the samples and " + num(100 * value(top["sse"]) / total) +
+    out += "- The largest input amplitudes (top bin) hold " + num(100 * double(top.n) / n) +
+           " % of the samples and " + num(100 * top.sse / total) +
            " % of the squared error.\n";
-  const json& b = m["by_branch"];
-  if (b["loading"]["rmse"].is_number() && b["unloading"]["rmse"].is_number())
-    out += "- RMSE while loading " + with_unit(num(b["loading"]["rmse"]), in.y_unit) +
-           ", while unloading " + with_unit(num(b["unloading"]["rmse"]), in.y_unit) + ".\n";
+  const BranchErrors& b = m.by_branch;
+  if (std::isfinite(b.loading.rmse) && std::isfinite(b.unloading.rmse))
+    out += "- RMSE while loading " + with_unit(num(b.loading.rmse), in.y_unit) +
+           ", while unloading " + with_unit(num(b.unloading.rmse), in.y_unit) + ".\n";
   return out.empty() ? out : out + "\n";
 }
 
-// One row per effect, as compare_signals wrote them (effect_signatures.hpp):
-// every registered effect's own statistic of this residual.
-std::string signature_table(const json& m) {
-  const json& signatures = m["signatures"];
-  if (signatures.empty()) return "";
+// One row per effect (effect_signatures.hpp): every registered effect's own
+// statistic of this residual, in registry order, which is by name
+// (registry.hpp) like the keys of metrics.json.
+std::string signature_table(const Comparison& m) {
+  if (m.signatures.empty()) return "";
   std::string out =
       "## Residual signatures\n\nEvery registered effect's own statistic of this residual, as "
       "declared in its effect file: how strongly the residual shows what that effect would "
       "explain. Each falls towards its no-sign value (0 for a correlation or R², about 1 for a "
       "ratio to chance) as the residual becomes white.\n\n" +
       row({"effect", "statistic", "value", "here"}) + "| :-- | :-- | --: | :-- |\n";
-  for (auto it = signatures.begin(); it != signatures.end(); ++it)
-    out += row({"`" + it.key() + "`", cell(it->value("statistic", "")), num((*it)["value"]),
-                cell(it->value("sentence", ""))});
+  for (const EffectSignature& s : m.signatures)
+    out += row({"`" + s.effect + "`", cell(s.statistic), num(s.value.value), cell(s.sentence)});
   return out + "\n";
 }
 
@@ -342,13 +333,13 @@ std::string figures(bool images, const std::string& note) {
 
 }  // namespace
 
-std::string comparison_markdown(const ComparisonInput& in, const json& metrics,
+std::string comparison_markdown(const ComparisonInput& in, const Comparison& metrics,
                                 const std::string& title, const std::string& model_text,
                                 bool images, const std::string& figure_note) {
-  const double ts = value(metrics["sample_time"]);
+  const double ts = metrics.sample_time;
   std::string out = "# " + title + "\n\nModel: `" +
                     (model_text.empty() ? std::string("(not named)") : model_text) + "`. " +
-                    num(metrics["n"]) + " samples, sample time " + num(ts) + " s" +
+                    count(metrics.n) + " samples, sample time " + num(ts) + " s" +
                     (in.u_unit.empty() ? std::string() : ", input in " + in.u_unit) +
                     (in.y_unit.empty() ? std::string() : ", output in " + in.y_unit) +
                     ". All numbers are in metrics.json.\n\n";
@@ -360,11 +351,11 @@ std::string comparison_markdown(const ComparisonInput& in, const json& metrics,
 }
 
 std::vector<fs::path> write_comparison(const fs::path& dir, const ComparisonInput& in,
-                                       const json& metrics, const std::string& title,
+                                       const Comparison& metrics, const std::string& title,
                                        const std::string& model_text) {
   fs::create_directories(dir);
   std::vector<fs::path> written;
-  write_file_atomic(dir / "metrics.json", metrics.dump(2) + "\n");
+  write_file_atomic(dir / "metrics.json", to_json(metrics).dump(2) + "\n");
   written.push_back(dir / "metrics.json");
   const FigureFiles fig = write_comparison_figures(dir, in, metrics, title);
   written.insert(written.end(), fig.data.begin(), fig.data.end());

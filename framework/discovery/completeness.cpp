@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "framework/core/text.hpp"
-#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/error_metrics.hpp"
 
 namespace hystbench {
@@ -12,18 +11,10 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double number(const nlohmann::json& j, const char* key) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_number() ? it->get<double>() : kNaN;
-}
-
-
-void worst_segment(const nlohmann::json& where, Completeness& c) {
+void worst_segment(const Comparison& where, Completeness& c) {
   double worst = -1;
-  for (const auto& s : where.value("by_segment", nlohmann::json::array())) {
-    const double rmse = number(s, "rmse");
-    if (rmse > worst) worst = rmse, c.worst_segment = s.value("segment", std::string());
-  }
+  for (const auto& s : where.by_segment)
+    if (s.metrics.rmse > worst) worst = s.metrics.rmse, c.worst_segment = s.segment;
   c.worst_segment_rmse_over_sigma = worst >= 0 && c.sigma > 0 ? worst / c.sigma : kNaN;
 }
 
@@ -41,15 +32,13 @@ std::string statistics_text(const Completeness& c, bool heldout) {
 
 }  // namespace
 
-Completeness assess_completeness(const FitErrors& errors, const nlohmann::json& where,
+Completeness assess_completeness(const FitErrors& errors, const Comparison& where,
                                  double tolerance) {
   Completeness c;
-  const nlohmann::json& residual = where.value("residual", nlohmann::json::object());
-  const nlohmann::json& ccf = residual.value("ccf", nlohmann::json::object());
-  c.sigma = number(where.value("noise_floor", nlohmann::json::object()), "sigma");
-  c.ljung_box_p = number(residual.value("ljung_box", nlohmann::json::object()), "p_value");
-  c.ccf_outside = ccf.value("outside", 0);
-  c.ccf_lags = int(ccf.value("lags", nlohmann::json::array()).size());
+  c.sigma = where.noise_floor.sigma;
+  c.ljung_box_p = where.residual.ljung_box.p_value;
+  c.ccf_outside = where.residual.ccf.outside;
+  c.ccf_lags = int(where.residual.ccf.lags.size());
   const bool heldout = errors.n_heldout > 0;
   c.rmse_over_sigma = c.sigma > 0 ? errors.rmse_estimation / c.sigma : kNaN;
   c.heldout_rmse_over_sigma = heldout && c.sigma > 0 ? errors.rmse_heldout / c.sigma : kNaN;

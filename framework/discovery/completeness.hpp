@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/fit_errors.hpp"
 
 namespace hystbench {
@@ -40,7 +41,7 @@ struct Completeness {
 
 // `where`: compare_signals of the fit; `errors`: its estimation and held-out
 // errors (physical units).
-Completeness assess_completeness(const FitErrors& errors, const nlohmann::json& where,
+Completeness assess_completeness(const FitErrors& errors, const Comparison& where,
                                  double tolerance = kFloorTolerance);
 
 }  // namespace hystbench

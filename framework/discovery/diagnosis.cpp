@@ -96,7 +96,7 @@ Candidate judge_candidate(const std::string& effect, const FitResult& r, const D
   if (!shared.empty()) c.significant = false;
   c.check = check_model(extended, r.x, data, o.u_unit, o.y_unit);
   c.evidence = evidence_sentence(EffectRegistry::instance().find(effect, "effect"),
-                                 signature_in(current.where, effect),
+                                 signature_in(current.where.signatures, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   if (!shared.empty()) c.evidence += " Not counted: " + shared + ".";
   return c;
@@ -133,18 +133,14 @@ const Candidate* Diagnosis::winner() const { return verdict == "none" ? nullptr 
 
 namespace {
 
-double noise_sigma(const nlohmann::json& where) {
-  return where.value("noise_floor", nlohmann::json::object()).value("sigma", std::nan(""));
-}
-
 // The current fit, polished and checked for being at its optimum, with its
 // residual analysis.
 Diagnosis current_fit(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
                       const DiagnoseOptions& o) {
   if (o.fit.status) o.fit.status("polishing " + model.text());
   FitResult fit = refit_warm(model, data, x, {}, o.fit);
-  nlohmann::json where = compare_signals(current_comparison(fit.model, fit.x, data, o));
-  const OptimumCheck optimum = ensure_optimum(fit, data, noise_sigma(where), o.fit);
+  Comparison where = compare_signals(current_comparison(fit.model, fit.x, data, o));
+  const OptimumCheck optimum = ensure_optimum(fit, data, where.noise_floor.sigma, o.fit);
   if (optimum.improved) where = compare_signals(current_comparison(fit.model, fit.x, data, o));
   Diagnosis d{fit.model, fit.x, fit_errors(fit.model, fit.x, data)};
   d.bic = bic(d.errors.sse, d.errors.n_estimation, model.dimension());
@@ -320,7 +316,7 @@ nlohmann::json Diagnosis::to_json() const {
           {"errors", errors.to_json()},
           {"bic", bic},
           {"candidates", list},
-          {"where", where},
+          {"where", hystbench::to_json(where)},
           {"options", options}};
 }
 

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/discovery/comparison.hpp"
 #include "framework/discovery/completeness.hpp"
 #include "framework/discovery/fit_at_optimum.hpp"
 #include "framework/discovery/fit_errors.hpp"
@@ -85,7 +86,7 @@ struct Diagnosis {
   OptimumCheck optimum = {};               // done before the candidates
   Completeness completeness = {};          // of the current fit
   ModelCheck check = {};                   // of the current fit
-  nlohmann::json where = {};               // compare_signals of the current fit
+  Comparison where = {};                   // compare_signals of the current fit
   nlohmann::json options = {};
 
   const Candidate* winner() const;

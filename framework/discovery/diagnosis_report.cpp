@@ -23,54 +23,45 @@ using markdown::num;
 
 std::string unit_suffix(const std::string& y_unit) { return y_unit.empty() ? "" : " " + y_unit; }
 
-double number(const nlohmann::json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
+// A breakdown group, labelled for the list of worst groups.
+struct Group {
+  std::string label;
+  double rmse;
+};
+
+// The group with the largest RMSE, as "label (RMSE x)"; the first of equals.
+std::string worst_of(const std::vector<Group>& groups, const std::string& unit) {
+  const Group* worst = nullptr;
+  for (const auto& g : groups)
+    if (std::isfinite(g.rmse) && (!worst || g.rmse > worst->rmse)) worst = &g;
+  return worst ? worst->label + " (RMSE " + num(worst->rmse) + unit + ")" : "";
 }
 
-// The group of a breakdown list with the largest RMSE, as "label (RMSE x)".
-std::string worst_of(const nlohmann::json& list, const std::string& label_key,
-                     const std::string& unit) {
-  const nlohmann::json* worst = nullptr;
-  for (const auto& g : list)
-    if (std::isfinite(number(g, "rmse")) && (!worst || number(g, "rmse") > number(*worst, "rmse")))
-      worst = &g;
-  if (!worst) return "";
-  const auto& label = (*worst)[label_key];
-  return (label.is_string() ? label.get<std::string>() : label.dump()) + " (RMSE " +
-         num((*worst)["rmse"]) + unit + ")";
+template <class Row, class Label>
+std::vector<Group> labelled(const std::vector<Row>& rows, Label label) {
+  std::vector<Group> out;
+  for (const auto& r : rows) out.push_back({label(r), r.metrics.rmse});
+  return out;
 }
 
-std::string worst_groups(const nlohmann::json& where, const std::string& unit) {
+std::string worst_groups(const Comparison& where, const std::string& unit) {
   std::string out;
-  const std::string segment = worst_of(where.value("by_segment", nlohmann::json::array()), "segment", unit);
-  if (!segment.empty()) out += "- worst segment: " + segment + "\n";
-  nlohmann::json bins = nlohmann::json::array();
-  for (const auto& b : where.value("by_amplitude", nlohmann::json::array())) {
-    auto labelled = b;
-    labelled["label"] = "|u − ū| " + num(b["u_low"]) + "…" + num(b["u_high"]);
-    bins.push_back(labelled);
-  }
-  const std::string amplitude = worst_of(bins, "label", unit);
-  if (!amplitude.empty()) out += "- worst input-amplitude bin: " + amplitude + "\n";
-  nlohmann::json branches = nlohmann::json::array();
-  // Named, not a temporary in the loop header: items() refers to the object,
-  // and a temporary there would be destroyed before the loop runs.
-  const nlohmann::json by_branch = where.value("by_branch", nlohmann::json::object());
-  for (const auto& [name, m] : by_branch.items()) {
-    auto labelled = m;
-    labelled["label"] = name;
-    branches.push_back(labelled);
-  }
-  const std::string branch = worst_of(branches, "label", unit);
-  if (!branch.empty()) out += "- worst branch: " + branch + "\n";
-  nlohmann::json windows = nlohmann::json::array();
-  for (const auto& w : where.value("by_time", nlohmann::json::array())) {
-    auto labelled = w;
-    labelled["label"] = num(w["t_start"]) + "–" + num(w["t_end"]) + " s";
-    windows.push_back(labelled);
-  }
-  const std::string window = worst_of(windows, "label", unit);
-  if (!window.empty()) out += "- worst time window: " + window + "\n";
+  const auto line = [&](const std::string& what, const std::vector<Group>& groups) {
+    const std::string worst = worst_of(groups, unit);
+    if (!worst.empty()) out += "- worst " + what + ": " + worst + "\n";
+  };
+  line("segment", labelled(where.by_segment, [](const SegmentErrors& s) { return s.segment; }));
+  line("input-amplitude bin", labelled(where.by_amplitude, [](const AmplitudeErrors& b) {
+         return "|u − ū| " + num(b.u_low) + "…" + num(b.u_high);
+       }));
+  // In the order of the branch names, as metrics.json lists them: the first
+  // of equal RMSEs is named.
+  const BranchErrors& b = where.by_branch;
+  line("branch",
+       {{"holding", b.holding.rmse}, {"loading", b.loading.rmse}, {"unloading", b.unloading.rmse}});
+  line("time window", labelled(where.by_time, [](const TimeErrors& w) {
+         return num(w.t_start) + "–" + num(w.t_end) + " s";
+       }));
   return out.empty() ? out : out + "\n";
 }
 
@@ -132,8 +123,7 @@ std::string where_section(const Diagnosis& d, const std::string& unit,
   out << "Model `" << d.model.text() << "`: RMSE " << num(d.errors.rmse_estimation) << unit
       << " (estimation)";
   if (d.errors.n_heldout) out << ", " << num(d.errors.rmse_heldout) << unit << " (held out)";
-  const auto& floor = d.where.value("noise_floor", nlohmann::json::object());
-  if (floor.contains("sigma")) out << "; estimated noise σ " << num(floor["sigma"]) << unit;
+  out << "; estimated noise σ " << num(d.where.noise_floor.sigma) << unit;
   out << ".\n\n";
   out << worst_groups(d.where, unit);
   for (const auto& warning : d.check.warnings()) out << "- " << warning << "\n";

@@ -1,19 +1,11 @@
 #include "framework/discovery/effect_signatures.hpp"
 
-#include <cmath>
-#include <limits>
+#include <algorithm>
 
 #include "framework/discovery/error_metrics.hpp"
 #include "framework/model/effect.hpp"
 
 namespace hystbench {
-namespace {
-
-double number_or_nan(const nlohmann::json& j) {
-  return j.is_number() ? j.get<double>() : std::numeric_limits<double>::quiet_NaN();
-}
-
-}  // namespace
 
 std::vector<EffectSignature> effect_signatures(const ResidualView& view) {
   std::vector<EffectSignature> out;
@@ -39,19 +31,11 @@ nlohmann::json to_json(const std::vector<EffectSignature>& signatures) {
   return out;
 }
 
-std::optional<EffectSignature> signature_in(const nlohmann::json& comparison,
+std::optional<EffectSignature> signature_in(const std::vector<EffectSignature>& signatures,
                                             const std::string& effect) {
-  const auto all = comparison.find("signatures");
-  if (all == comparison.end() || !all->is_object() || !all->contains(effect)) return std::nullopt;
-  const nlohmann::json& j = (*all)[effect];
-  EffectSignature s{effect,
-                    j.value("statistic", ""),
-                    {number_or_nan(j.value("value", nlohmann::json()))},
-                    j.value("sentence", "")};
-  const nlohmann::json details = j.value("details", nlohmann::json::object());
-  for (auto it = details.begin(); it != details.end(); ++it)
-    s.value.details.emplace_back(it.key(), number_or_nan(it.value()));
-  return s;
+  const auto it = std::find_if(signatures.begin(), signatures.end(),
+                               [&](const EffectSignature& s) { return s.effect == effect; });
+  return it == signatures.end() ? std::nullopt : std::optional<EffectSignature>(*it);
 }
 
 }  // namespace hystbench

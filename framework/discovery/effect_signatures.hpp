@@ -27,9 +27,9 @@ std::vector<EffectSignature> effect_signatures(const ResidualView& view);
 //               "details": {"<name>": number or null, ...}}, ...}
 nlohmann::json to_json(const std::vector<EffectSignature>& signatures);
 
-// The signature of `effect` in the "signatures" object of a compare_signals
-// result (comparison.hpp); nullopt when it has none.
-std::optional<EffectSignature> signature_in(const nlohmann::json& comparison,
+// The signature of `effect` among `signatures` (those of a compare_signals
+// result, comparison.hpp); nullopt when it has none.
+std::optional<EffectSignature> signature_in(const std::vector<EffectSignature>& signatures,
                                             const std::string& effect);
 
 }  // namespace hystbench

@@ -14,8 +14,9 @@ namespace hystbench {
 // `significant` says whether the candidate passed the diagnosis rule: the
 // signature is then given as the reason it helps, otherwise as what would
 // have pointed at it. `statistic`: the effect's signature on the current
-// residual (signature_in(compare_signals of the current fit, effect)); an
-// effect without one is explained by its signature text and the error change.
+// residual (signature_in over the signatures of the current fit's
+// compare_signals); an effect without one is explained by its signature
+// text and the error change.
 std::string evidence_sentence(const EffectInfo& effect,
                               const std::optional<EffectSignature>& statistic,
                               const FitErrors& before, const FitErrors& after, double delta_bic,

@@ -97,9 +97,11 @@ FitRecord make_fit_record(const Model& model, const Eigen::VectorXd& x, const Mo
   FitRecord r{model, x, data.scales, source, holdout};
   Eigen::VectorXd y;
   const bool stable = simulate_physical(model, x, data, y);
+  const nlohmann::json metrics =
+      stable ? to_json(part_metrics(comparison_input(data, y, source.u_unit, source.y_unit)))
+             : nlohmann::json();
   r.details = {{"errors", fit_errors(model, x, data).to_json()},
-               {"metrics", stable ? part_metrics(comparison_input(data, y, source.u_unit, source.y_unit))
-                                  : nlohmann::json()},
+               {"metrics", metrics},
                {"seed", seed},
                {"provenance", provenance(omp_get_max_threads(), seed)}};
   return r;

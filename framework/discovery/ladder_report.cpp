@@ -24,8 +24,7 @@ namespace {
 using markdown::num;
 
 double estimated_sigma(const Ladder& ladder) {
-  const auto& floor = ladder.diagnoses.back().where.value("noise_floor", nlohmann::json::object());
-  return floor.value("sigma", std::nan(""));
+  return ladder.diagnoses.back().where.noise_floor.sigma;
 }
 
 nlohmann::json close_call_json(const CloseCall& c) {

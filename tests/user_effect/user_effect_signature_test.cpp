@@ -63,12 +63,12 @@ ComparisonInput rectified_case() {
 
 TEST(UserEffectSignature, ComputedWrittenAndPrintedWithTheCatalogs) {
   const ComparisonInput in = rectified_case();
-  const nlohmann::json m = compare_signals(in);
-  const nlohmann::json& s = m["signatures"]["rectified_drive"];
+  const Comparison m = compare_signals(in);
+  const nlohmann::json s = to_json(m.signatures)["rectified_drive"];
   EXPECT_EQ(s["statistic"], "corr(e, |u|)");
   EXPECT_NEAR(s["value"].get<double>(), 1.0, 1e-9);
   EXPECT_EQ(s["sentence"], "the residual correlates with the rectified input |u| (r = 1)");
-  EXPECT_TRUE(m["signatures"].contains("offset"));  // the catalog's are still there
+  EXPECT_TRUE(signature_in(m.signatures, "offset"));  // the catalog's are still there
 
   const std::string report = comparison_markdown(in, m, "t", "m", false, "");
   EXPECT_NE(report.find("| `rectified_drive` | corr(e, \\|u\\|) | 1 |"), std::string::npos)
@@ -76,13 +76,14 @@ TEST(UserEffectSignature, ComputedWrittenAndPrintedWithTheCatalogs) {
 }
 
 TEST(UserEffectSignature, CitedInTheEvidenceForTheCandidate) {
-  const nlohmann::json where = compare_signals(rectified_case());
+  const Comparison where = compare_signals(rectified_case());
   FitErrors before, after;
   before.rmse_estimation = 0.13;
   after.rmse_estimation = 0.01;
   const std::string evidence =
       evidence_sentence(EffectRegistry::instance().find("rectified_drive", "effect"),
-                        signature_in(where, "rectified_drive"), before, after, -120, true, "");
+                        signature_in(where.signatures, "rectified_drive"), before, after, -120,
+                        true, "");
   EXPECT_NE(evidence.find("It helps because the residual follows |u|; here the residual "
                           "correlates with the rectified input |u| (r = 1)."),
             std::string::npos)
