@@ -1,4 +1,5 @@
-// The seed model against values computed by hand from DESIGN.md §3.
+// The seed model against values computed by hand from
+// docs/design.md#hammerstein-seed-model.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -65,7 +65,7 @@ TEST(SwarmGaJaya, ReachTheSphereOptimumWithDefaults) {
 }
 
 TEST(SwarmGaJaya, GaApproachesTheSphereOptimumSlowly) {
-  // The GA of algorithms.md §5 does not reach 1e-6 on sphere-10 (box
+  // The GA of docs/algorithms.md#ga does not reach 1e-6 on sphere-10 (box
   // [-100, 100]) in 50 000 evaluations. Measured best values, trials 0-4 of
   // this experiment: 2.5e-3, 3.8e-3, 1.5e-2, 1.1e-2, 2.0e-2 (median 1.1e-2);
   // of another seed: 2.8e-3 .. 1.8e-2 (median 3.0e-3). Polynomial mutation

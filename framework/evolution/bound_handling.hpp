@@ -1,5 +1,5 @@
 #pragma once
-// Repair of components that left the box (algorithms.md §0.6). Shared by
+// Repair of components that left the box (docs/algorithms.md#bound-handling). Shared by
 // every population method so that "midpoint" means the same everywhere.
 #include <Eigen/Core>
 #include <string>

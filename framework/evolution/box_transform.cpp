@@ -10,8 +10,8 @@ double margin(double l, double u, double bound) {
   return std::min((u - l) / 2, 0.05 * std::max(std::abs(bound), 1.0));
 }
 
-// Steps 1 and 2 of §8.3: bring y into [l - a_l, u + a_u], where the
-// quadratic pieces are invertible.
+// The fold and the mirror of docs/algorithms.md#boundtransform: bring y into
+// [l - a_l, u + a_u], where the quadratic pieces are invertible.
 double fold_into_window(double y, double l, double u, double al, double au) {
   const double width = u - l;
   const double start = l - 2 * al - width / 2;

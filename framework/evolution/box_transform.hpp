@@ -1,6 +1,7 @@
 #pragma once
 // pycma's default box-constraint handling for CMA-ES, "BoundTransform"
-// (the piecewise linear-quadratic transformation, algorithms.md §8.3).
+// (the piecewise linear-quadratic transformation,
+// docs/algorithms.md#boundtransform).
 //
 // CMA-ES samples without bounds and evaluates f at the transformed point,
 // keeping the untransformed one for its update. The map is the identity on

@@ -10,7 +10,7 @@
 namespace hystbench {
 namespace {
 
-// Stopping thresholds of the tutorial (algorithms.md §8.3).
+// Stopping thresholds of the tutorial (docs/algorithms.md#stopping-and-ipop-restarts).
 constexpr double tol_fun = 1e-12;
 constexpr double tol_x_factor = 1e-12;  // times sigma_0
 constexpr double max_condition = 1e14;

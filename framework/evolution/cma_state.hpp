@@ -1,6 +1,6 @@
 #pragma once
 // The (mu/mu_w, lambda)-CMA-ES of Hansen's tutorial, positive weights only
-// (algorithms.md §8.3): the default strategy parameters, one generation's
+// (docs/algorithms.md#cma-es): the default strategy parameters, one generation's
 // sampling and update, and the stopping tests that end a run or trigger an
 // IPOP restart. The state knows nothing of bounds or budgets; the caller
 // maps the sampled points into the box and evaluates them.

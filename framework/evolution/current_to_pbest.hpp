@@ -1,6 +1,6 @@
 #pragma once
 // DE/current-to-pBest-w/1 with an external archive, the SHADE family's
-// mutation (algorithms.md §1.2, §8.1, §8.2):
+// mutation (docs/algorithms.md#shade-family):
 //   v = x_i + F_pbest (x_pbest - x_i) + F (x_r1 - x~_r2)
 // L-SHADE uses F_pbest = F; jSO weights F_pbest by stage.
 #include <Eigen/Core>

@@ -1,9 +1,10 @@
 #pragma once
-// The synchronous DE loop of algorithms.md §1.1 for variants that differ
+// The synchronous DE loop (docs/algorithms.md#de) for variants that differ
 // only in how they build trial vectors (DETVSF, DERSF, MEDE, AmFMMDE):
 // uniform initialisation, then per generation one batch of NP trials built
-// from the same population (§0.8), evaluated in one call, and greedy
-// one-to-one selection with the "<=" tie rule (§0.7).
+// from the same population (docs/algorithms.md#synchronous-generations),
+// evaluated in one call, and greedy one-to-one selection with the "<=" tie
+// rule (docs/algorithms.md#selection).
 #include <Eigen/Core>
 #include <functional>
 #include <vector>
@@ -33,7 +34,8 @@ void run_synchronous_de(EvaluationContext& ctx, int np, const DeTrialBuilder& bu
                         const DeOutcomeObserver& observe = nullptr);
 
 // Trial of one target: binomial crossover with the mutant, then repair of
-// the components outside the box against the target (§0.6).
+// the components outside the box against the target
+// (docs/algorithms.md#bound-handling).
 Eigen::VectorXd de_trial(const Eigen::Ref<const Eigen::VectorXd>& target,
                          const Eigen::VectorXd& mutant, double CR, BoundHandling rule,
                          EvaluationContext& ctx);

@@ -1,6 +1,6 @@
 #pragma once
 // JADE/SHADE external archive: parents beaten by their trials, kept as extra
-// donors for the second difference vector (algorithms.md §1.5, §8.1).
+// donors for the second difference vector (docs/algorithms.md#external-archive).
 #include <Eigen/Core>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// One-to-one greedy replacement with the "<=" tie rule (algorithms.md §0.7):
+// One-to-one greedy replacement with the "<=" tie rule (docs/algorithms.md#selection):
 // candidate i replaces member i when it is not worse.
 #include <Eigen/Core>
 

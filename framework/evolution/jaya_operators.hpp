@@ -1,5 +1,5 @@
 #pragma once
-// The Jaya move (algorithms.md §7.1, Rao 2016), shared by Jaya and the
+// The Jaya move (docs/algorithms.md#jaya, Rao 2016), shared by Jaya and the
 // Jaya+DE hybrid.
 #include <Eigen/Core>
 

@@ -1,6 +1,7 @@
 #pragma once
 // The unit cube z in [0,1]^D and its affine map to the box,
-// x_j = l_j + z_j (u_j - l_j) (algorithms.md §0.3). Methods whose steps
+// x_j = l_j + z_j (u_j - l_j) (docs/algorithms.md#normalised-coordinates).
+// Methods whose steps
 // depend on the scale of the coordinates (Jaya's |x| term, PSO velocity
 // limits) search in z so that every parameter counts alike whatever its
 // physical range.

@@ -9,7 +9,7 @@
 
 namespace hystbench {
 
-// NP points drawn uniformly in the box, one per column (algorithms.md §0.5).
+// NP points drawn uniformly in the box, one per column (docs/algorithms.md#initial-population).
 Eigen::MatrixXd uniform_population(const Bounds& bounds, int np, Rng& rng);
 
 // `count` distinct indices from {0..n-1}, all different from the ones in

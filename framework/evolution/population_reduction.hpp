@@ -1,5 +1,6 @@
 #pragma once
-// Linear population size reduction (LPSR, L-SHADE; algorithms.md §8.1):
+// Linear population size reduction (LPSR, L-SHADE;
+// docs/algorithms.md#population-size-reduction):
 // the population shrinks from N_init to N_min as the budget is used, by
 // dropping its worst members.
 #include <Eigen/Core>

@@ -1,7 +1,8 @@
 #pragma once
-// Variation and selection operators of the real-coded GA (algorithms.md §5):
+// Variation and selection operators of the real-coded GA (docs/algorithms.md#ga):
 // binary (k-ary) tournament, bounded SBX and bounded polynomial mutation in
-// the NSGA-II formulation, and the switchable alternatives of §5.4. Every
+// the NSGA-II formulation, and the switchable alternatives
+// (docs/algorithms.md#alternative-operators). Every
 // child they return lies inside the box.
 #include <Eigen/Core>
 #include <string>
@@ -27,23 +28,26 @@ RealMutation real_mutation_from_string(const std::string& name);
 // uniformly: lowest f wins, ties are broken uniformly at random.
 int tournament(const Eigen::VectorXd& f, int size, Rng& rng);
 
-// Bounded simulated binary crossover with distribution index eta (§5.2).
+// Bounded simulated binary crossover with distribution index eta
+// (docs/algorithms.md#bounded-sbx).
 ChildPair sbx_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
                         const Bounds& bounds, double eta, Rng& rng);
 // BLX-alpha: each component uniform in the parents' interval widened by
-// alpha times its length on both sides, then clipped (§5.4).
+// alpha times its length on both sides, then clipped
+// (docs/algorithms.md#alternative-operators).
 ChildPair blx_alpha_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
                               const Bounds& bounds, double alpha, Rng& rng);
-// Whole-vector arithmetic crossover with one lambda = U(0,1) per pair (§5.4).
+// Whole-vector arithmetic crossover with one lambda = U(0,1) per pair
+// (docs/algorithms.md#alternative-operators).
 ChildPair arithmetic_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd& y2,
                                const Bounds& bounds, Rng& rng);
 
 // Bounded polynomial mutation with index eta, each component with
-// probability pm (§5.3).
+// probability pm (docs/algorithms.md#polynomial-mutation).
 void polynomial_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
                          double eta, Rng& rng);
 // y_j += N(0, sigma (u_j - l_j)) with probability pm per component, then
-// clipped (§5.4).
+// clipped (docs/algorithms.md#alternative-operators).
 void gaussian_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
                        double sigma, Rng& rng);
 

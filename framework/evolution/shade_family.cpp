@@ -34,8 +34,8 @@ class ShadeSearch {
  private:
   int np() const { return static_cast<int>(X_.cols()); }
 
-  // Synchronous generation (§0.8): every trial sees the same population,
-  // ranking and archive.
+  // Synchronous generation (docs/algorithms.md#synchronous-generations):
+  // every trial sees the same population, ranking and archive.
   void make_trials(double tau) {
     const auto order = rank_order(fx_);
     const DePopulationView pop{X_, order, pbest_count(p_, np())};
@@ -51,7 +51,7 @@ class ShadeSearch {
   }
 
   // Strict improvements are successes (archived parent, recorded F/CR);
-  // ties still replace the parent (§0.7).
+  // ties still replace the parent (docs/algorithms.md#selection).
   void select(Eigen::Index evaluated) {
     SuccessSet successes;
     for (Eigen::Index i = 0; i < evaluated; ++i) {

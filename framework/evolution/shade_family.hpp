@@ -1,5 +1,5 @@
 #pragma once
-// The generation loop shared by L-SHADE and jSO (algorithms.md §8.1, §8.2):
+// The generation loop shared by L-SHADE and jSO (docs/algorithms.md#shade-family):
 // success-history memories of F and CR, current-to-pBest(-w)/1 with an
 // external archive, binomial crossover, greedy "<=" selection and linear
 // population size reduction. The variants differ only in their settings and

@@ -1,8 +1,9 @@
 #pragma once
 // Success-based strategy probabilities of SaDE (A. K. Qin, V. L. Huang,
-// P. N. Suganthan, IEEE TEVC 13(2):398-417, 2009) as algorithms.md §4.4 states
-// them: per strategy k, successes ns_k and failures nf_k of the last LP
-// generations give S_k = sum ns_k / (sum ns_k + sum nf_k) + eps and
+// P. N. Suganthan, IEEE TEVC 13(2):398-417, 2009) as
+// docs/algorithms.md#strategy-selection states them: per strategy k,
+// successes ns_k and failures nf_k of the last LP generations give
+// S_k = sum ns_k / (sum ns_k + sum nf_k) + eps and
 // p_k = S_k / sum_m S_m; p_k = 1/K until LP generations have been recorded.
 // A strategy not tried in the window counts as success rate 0 (S_k = eps)
 // rather than 0/0.

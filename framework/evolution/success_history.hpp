@@ -1,6 +1,6 @@
 #pragma once
 // Success-history adaptation of F and CR, the SHADE family's parameter
-// control (algorithms.md §8.1, §8.2): H memory slots of (mu_F, mu_CR), each
+// control (docs/algorithms.md#success-history): H memory slots of (mu_F, mu_CR), each
 // generation's successful values folded into one slot by a weighted Lehmer
 // mean, slots overwritten in turn.
 #include <vector>
@@ -13,7 +13,7 @@ namespace hystbench {
 class SuccessSet {
  public:
   // Records a success. A pair with an infinite (or NaN) gain carries no
-  // usable weight and is left out (algorithms.md §0.9).
+  // usable weight and is left out (docs/algorithms.md#infinite-fitness).
   void add(double F, double CR, double f_parent, double f_trial);
   bool empty() const { return F_.empty(); }
   const std::vector<double>& F() const { return F_; }

@@ -35,7 +35,8 @@ struct ColumnMap {
   nlohmann::json to_json() const;
 };
 
-// Reads a measurement CSV (DESIGN.md §6). InputError naming file, line and
+// Reads a measurement CSV (docs/design.md#measurement-csv). InputError naming
+// file, line and
 // column for: missing or empty file, missing or duplicate column, a value not
 // a finite number or beyond 1e150, ragged row, time not increasing or not
 // evenly sampled, fewer than two samples. Accepts a UTF-8 BOM, CRLF line

@@ -1,5 +1,5 @@
 #pragma once
-// One NLopt run through the evaluation context (algorithms.md §9).
+// One NLopt run through the evaluation context (docs/algorithms.md#nlopt).
 //
 // NLopt's maxeval is not a strict limit, so the wrapper counts the calls it
 // makes and stops NLopt (nlopt::forced_stop) once its share of the budget is

@@ -1,6 +1,6 @@
 #pragma once
 // Convergence curves: per algorithm, the median and quartiles over trials of
-// the best-so-far fitness against evaluations (algorithms.md §10.5).
+// the best-so-far fitness against evaluations (docs/algorithms.md#convergence-curves).
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // The algorithms of several results folders, one per problem or data set,
-// ranked with the Friedman test (algorithms.md §10.3): each folder is a
+// ranked with the Friedman test (docs/algorithms.md#friedman-test): each folder is a
 // block, its algorithms are ranked by the mean (or median) final fitness of
 // their trials, and the average ranks are compared with the Iman-Davenport
 // statistic, the Nemenyi critical difference and Holm-corrected tests

@@ -94,7 +94,7 @@ std::vector<std::string> row_cells(const AlgorithmStatistics& r, const CampaignS
   return cells;
 }
 
-// "+/=/-" counts of the marks, printed under the table (§10.2).
+// "+/=/-" counts of the marks, printed under the table (docs/algorithms.md#rank-sum-test).
 std::string mark_counts(const CampaignStatistics& s) {
   int plus = 0, same = 0, minus = 0;
   for (const auto& r : s.rows) {

@@ -1,8 +1,9 @@
 #pragma once
-// The comparison statistics of a campaign (algorithms.md §10.2, §10.4), one
-// row per algorithm: the rank-sum mark against a reference algorithm with
-// Holm-adjusted p-values, success rate and ERT to a target, and the median
-// best-so-far value at fixed fractions of the evaluation budget.
+// The comparison statistics of a campaign (docs/algorithms.md#rank-sum-test,
+// docs/algorithms.md#runtime-measures), one row per algorithm: the rank-sum
+// mark against a reference algorithm with Holm-adjusted p-values, success
+// rate and ERT to a target, and the median best-so-far value at fixed
+// fractions of the evaluation budget.
 #include <optional>
 #include <string>
 #include <vector>

@@ -13,8 +13,8 @@
 namespace hystbench::stats {
 namespace {
 
-// Demsar (2006), table 5(a), k = 2..10; the same values as algorithms.md
-// section 10.3.
+// Demsar (2006), table 5(a), k = 2..10; the same values as
+// docs/algorithms.md#friedman-test.
 constexpr std::array<double, 9> kNemenyiQ05{1.960, 2.343, 2.569, 2.728, 2.850,
                                             2.949, 3.031, 3.102, 3.164};
 

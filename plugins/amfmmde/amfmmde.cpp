@@ -1,5 +1,5 @@
 // AmFMMDE, adaptive mutation factor and multiple mutation strategy DE
-// (algorithms.md §4.6): per individual an adaptive F and one of four
+// (docs/algorithms.md#amfmmde): per individual an adaptive F and one of four
 // mutations S1 best/1, S2 rand/1, S3 pbest/1, S4 neighbor/1; binomial
 // crossover, MIDPOINT repair, synchronous "<=" selection. Only the strategy
 // names are published; the F rule, the strategy selection, the reading of
@@ -108,7 +108,8 @@ class Amfmmde : public Optimizer {
     std::vector<int> chosen;  // strategy of each trial of the current generation
   };
 
-  // 1/G_max with G_max = floor((MaxFEs - NP) / NP) (§0.1); 0 without an
+  // 1/G_max with G_max = floor((MaxFEs - NP) / NP)
+// (docs/algorithms.md#adaptive-scale-factor); 0 without an
   // evaluation budget, the limit of many generations. Called before any
   // evaluation, so the remaining evaluations are MaxFEs.
   static double inverse_gmax(const EvaluationContext& ctx, int np) {

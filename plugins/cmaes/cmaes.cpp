@@ -1,6 +1,7 @@
-// CMA-ES with optional IPOP restarts (algorithms.md §8.3, §11).
+// CMA-ES with optional IPOP restarts (docs/algorithms.md#cma-es).
 //
-// Works in normalised coordinates z in [0, 1]^D (§0.3): the mean starts
+// Works in normalised coordinates z in [0, 1]^D
+// (docs/algorithms.md#normalised-coordinates): the mean starts
 // uniformly in the unit box with sigma_0 = 0.3. Each generation's lambda
 // offspring are evaluated in one batch at phi(m + sigma y), phi being pycma's
 // BoundTransform, so every evaluated point is inside the box by construction

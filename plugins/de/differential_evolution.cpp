@@ -1,8 +1,9 @@
-// Classic differential evolution, DE/x/1/bin (algorithms.md §1).
+// Classic differential evolution, DE/x/1/bin (docs/algorithms.md#de).
 //
-// Synchronous generations (§0.8) through the shared DE loop: all trials of
-// a generation are built from the same population and evaluated in one
-// batch, then greedy one-to-one selection with the "<=" tie rule (§0.7).
+// Synchronous generations (docs/algorithms.md#synchronous-generations)
+// through the shared DE loop: all trials of a generation are built from the
+// same population and evaluated in one batch, then greedy one-to-one
+// selection with the "<=" tie rule (docs/algorithms.md#selection).
 #include <algorithm>
 
 #include "framework/core/registry.hpp"

@@ -1,4 +1,5 @@
-// DETVSF and DERSF (Das, Konar, Chakraborty 2005; algorithms.md §2):
+// DETVSF and DERSF (Das, Konar, Chakraborty 2005;
+// docs/algorithms.md#detvsf-and-dersf):
 // DE/rand/1/bin in which only the scale factor F changes. Both names are
 // the same optimizer with a different default F rule, so either can run the
 // other's rule through "scale_factor".
@@ -63,7 +64,8 @@ class ScheduledFDe : public Optimizer {
  private:
   void make_trials(EvaluationContext& ctx, const DeGeneration& g, Eigen::MatrixXd& U) const {
     const DePopulationView pop{g.X, g.order, /*pbest_count, unused by rand/1*/ 2};
-    // One F for the whole generation, from tau at its start (§0.2).
+    // One F for the whole generation, from tau at its start
+    // (docs/algorithms.md#progress-ratio).
     const double scheduled = time_varying_scale_factor(f_min_, f_max_, ctx.progress());
     for (int i = 0; i < g.X.cols(); ++i) {
       const double F = random_ ? random_scale_factor(ctx.rng().uniform()) : scheduled;

@@ -1,4 +1,4 @@
-// Real-coded genetic algorithm (algorithms.md §5): the operator set of
+// Real-coded genetic algorithm (docs/algorithms.md#ga): the operator set of
 // NSGA-II reduced to one objective.
 //
 // Each generation breeds N - E offspring by tournament selection, crossover

@@ -1,11 +1,13 @@
-// "Hybrid Jaya" for hysteresis identification (algorithms.md §7.2), a
-// RECONSTRUCTION: the hybrid cited for Bouc-Wen/MFC identification could not
-// be found, so this is the common Jaya + DE pattern written there.
+// "Hybrid Jaya" for hysteresis identification
+// (docs/algorithms.md#hybrid-jaya), a RECONSTRUCTION: the hybrid cited for
+// Bouc-Wen/MFC identification could not be found, so this is the common
+// Jaya + DE pattern described there.
 //
 // Each iteration runs two synchronous phases on the same population, each
-// evaluated in one batch with greedy "<=" acceptance: a Jaya phase (§7.1,
-// CLIP repair) and a DE/rand/1/bin phase (MIDPOINT repair). Everything runs
-// in normalised coordinates z in [0,1]^D (§0.3).
+// evaluated in one batch with greedy "<=" acceptance: a Jaya phase
+// (docs/algorithms.md#jaya, CLIP repair) and a DE/rand/1/bin phase (MIDPOINT
+// repair). Everything runs in normalised coordinates z in [0,1]^D
+// (docs/algorithms.md#normalised-coordinates).
 #include "framework/core/registry.hpp"
 #include "framework/evolution/bound_handling.hpp"
 #include "framework/evolution/de_operators.hpp"

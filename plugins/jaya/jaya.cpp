@@ -1,8 +1,9 @@
-// Jaya (algorithms.md §7.1, Rao 2016): every candidate moves toward the best
+// Jaya (docs/algorithms.md#jaya, Rao 2016): every candidate moves toward the best
 // and away from the worst member of the current population and keeps the
 // move if it is not worse. No algorithm-specific parameters.
 //
-// Runs in normalised coordinates z in [0,1]^D (§0.3, §7.1), where the |x|
+// Runs in normalised coordinates z in [0,1]^D
+// (docs/algorithms.md#normalised-coordinates), where the |x|
 // term of the update is a no-op and negative-valued parameters are not
 // biased. All moves of an iteration use the same best and worst and are
 // evaluated in one batch.

@@ -1,6 +1,6 @@
 // jSO: L-SHADE with a pinned memory slot, stage-wise CR and F clamps, a
 // decreasing p-best fraction and the weighted mutation current-to-pBest-w/1
-// (algorithms.md §8.2, following the authors' reference code).
+// (docs/algorithms.md#jso, following the authors' reference code).
 //
 // The generation loop lives in framework/evolution/shade_family; this plugin
 // supplies jSO's settings and its draw of F, CR and the p-best weight.

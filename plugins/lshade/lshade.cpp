@@ -1,4 +1,5 @@
-// L-SHADE: SHADE with linear population size reduction (algorithms.md §8.1).
+// L-SHADE: SHADE with linear population size reduction
+// (docs/algorithms.md#l-shade).
 //
 // The generation loop lives in framework/evolution/shade_family; this plugin
 // supplies L-SHADE's settings and its plain draw of F and CR from a random

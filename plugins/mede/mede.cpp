@@ -1,4 +1,4 @@
-// MEDE, mutation enhanced differential evolution (algorithms.md §3): every
+// MEDE, mutation enhanced differential evolution (docs/algorithms.md#mede): every
 // individual draws its own F uniformly in [f_min, f_max] and one of three
 // mutations (best/1, rand/1, current-to-pbest/1 without archive) with equal
 // probability; binomial crossover, MIDPOINT repair, synchronous "<=" selection.

@@ -1,4 +1,4 @@
-// Any derivative-free NLopt algorithm on the box (algorithms.md §9), with
+// Any derivative-free NLopt algorithm on the box (docs/algorithms.md#nlopt), with
 // the budget enforced by the wrapper, not by NLopt's approximate maxeval.
 #include "framework/core/registry.hpp"
 #include "framework/evolution/population.hpp"

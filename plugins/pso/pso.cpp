@@ -1,8 +1,9 @@
-// Particle swarm optimisation (algorithms.md §6): inertia-weight PSO
+// Particle swarm optimisation (docs/algorithms.md#pso): inertia-weight PSO
 // (Shi & Eberhart) or constriction-factor PSO (Clerc & Kennedy).
 //
-// The swarm flies in normalised coordinates z in [0,1]^D (§0.3), so Vmax is
-// a fraction of each parameter's range. Synchronous update (§6.1): every
+// The swarm flies in normalised coordinates z in [0,1]^D
+// (docs/algorithms.md#normalised-coordinates), so Vmax is a fraction of each
+// parameter's range. Synchronous update (docs/algorithms.md#pso): every
 // particle moves using the personal and neighbourhood bests of the previous
 // iteration, the whole swarm is evaluated in one batch, then the bests are
 // refreshed with the "<=" rule.
@@ -138,7 +139,7 @@ class ParticleSwarm : public Optimizer {
     }
   }
 
-  // Wall handling in the unit cube (§6.1).
+  // Wall handling in the unit cube (docs/algorithms.md#pso).
   void hit_walls(double& z, double& v) const {
     if (z >= 0.0 && z <= 1.0) return;
     if (walls_ == Walls::Absorbing) {

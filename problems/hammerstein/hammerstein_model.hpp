@@ -1,5 +1,6 @@
 #pragma once
-// The 13-parameter Hammerstein seed model of an MFC actuator (DESIGN.md §3):
+// The 13-parameter Hammerstein seed model of an MFC actuator
+// (docs/design.md#hammerstein-seed-model):
 // Bouc-Wen hysteresis -> asymmetric static part -> mass-spring-damper
 // (bilinear discretisation) -> second-order ARX.
 //

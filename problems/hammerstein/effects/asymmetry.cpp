@@ -3,7 +3,8 @@
 //   signal[k] += d2·v[k]²
 //
 // v is the stage input (normalised drive after the input effects); with the
-// model's gain·v this is the seed's d1·u + d2·u² (DESIGN.md §3; Fu et al.,
+// model's gain·v this is the seed's d1·u + d2·u² (docs/design.md#hammerstein-seed-model;
+// Fu et al.,
 // asymmetric Bouc-Wen for MFC). Neutral d2 = 0. Units: y/u².
 #include <array>
 #include <cmath>

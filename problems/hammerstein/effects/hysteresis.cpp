@@ -5,8 +5,9 @@
 //
 // v is the stage input (the normalised drive after the input effects), so
 // the loop is driven by the drive, as h is by u in the seed model's
-// h1 = d1·u + d2·u² − h (DESIGN.md §3). A stands for the seed's α·L: the two
-// enter only as a product, so one parameter keeps the direction identifiable.
+// h1 = d1·u + d2·u² − h (docs/design.md#hammerstein-seed-model). A stands for
+// the seed's α·L: the two enter only as a product, so one parameter keeps the
+// direction identifiable.
 // The loop's branch slopes are set by A, its width saturates at about
 // A/(β+γ); none of them can be traded against the model's gain.
 //
