@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -458,10 +459,11 @@ TEST(Measurement, WritesHeaderCommentsAndNoTempFile) {
 // ---- the real data set ---------------------------------------------------
 
 TEST(Measurement, ReadsBoucWenTrainingFile) {
-  // Normalised first: tests/data itself need not exist for the path to work.
-  const fs::path p =
-      fs::path(HYSTBENCH_TEST_DATA "/../../../shared/data/boucwen/train_multisine_dynonet.csv")
-          .lexically_normal();
+  // The benchmark data are not shipped (see results/boucwen/README.md): the
+  // test runs where HYSTBENCH_BOUCWEN_DATA names the folder that holds them.
+  const char* folder = std::getenv("HYSTBENCH_BOUCWEN_DATA");
+  if (!folder) GTEST_SKIP() << "HYSTBENCH_BOUCWEN_DATA is not set";
+  const fs::path p = fs::path(folder) / "train_multisine_dynonet.csv";
   if (!fs::exists(p)) GTEST_SKIP() << "Bouc-Wen data not present at " << p;
   const Measurement m = read_measurement(p, ColumnMap::parse("t=t_s,u=u_N,y=y_m"));
   EXPECT_EQ(m.size(), 40960);

@@ -30,7 +30,7 @@ const char* const kCitation =
     "Vibration and Active Control (SAGE), 2024, doi:10.1177/14613484241295460 (title and "
     "authors unverified). Strategy set from the paper; DE/neighbor/1 from H. Peng, Z. Guo, "
     "C. Deng, Z. Wu, J. Computational Science 26, 2018, doi:10.1016/j.jocs.2017.07.010. "
-    "RECONSTRUCTION (algorithms.md §4): the adaptive-F rule (AMF-1/2/3), the strategy "
+    "RECONSTRUCTION (docs/algorithms.md#amfmmde): the adaptive-F rule (AMF-1/2/3), the strategy "
     "selection (uniform or SaDE: Qin, Huang, Suganthan, IEEE TEVC 13(2), 2009, LP generations, "
     "eps 0.01), the neighbour count max(3, round(0.1 NP)) and the reading of DE/pbest/1 "
     "(current-to-pbest by default) are this project's rebuild.";

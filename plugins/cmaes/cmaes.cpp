@@ -30,11 +30,11 @@ class CmaEs : public Optimizer {
             "Strategies, Evolutionary Computation 9(2):159-195, 2001; N. Hansen, The CMA "
             "Evolution Strategy: A Tutorial, arXiv:1604.00772, 2016; A. Auger, N. Hansen, A "
             "Restart CMA Evolution Strategy With Increasing Population Size, CEC 2005, "
-            "1769-1776. RECALLED (algorithms.md §8.3, from the tutorial): default strategy "
+            "1769-1776. RECALLED (docs/algorithms.md#cma-es, from the tutorial): default strategy "
             "parameters, update equations (positive weights only, no active CMA), "
             "initialisation m ~ U(0,1)^D with sigma_0 = 0.3, stopping criteria TolFun, TolX, "
             "ConditionCov, NoEffectAxis, NoEffectCoord. SOURCE (pycma code): BoundTransform "
-            "box transformation, margins as algorithms.md writes them. RESOLUTION: c_mu and "
+            "box transformation, margins as docs/algorithms.md#boundtransform writes them. RESOLUTION: c_mu and "
             "d_sigma from the tutorial table (not pycma's variants); NoEffectAxis tests axis "
             "g mod D each generation; IPOP population doubling capped at 2^20.",
             {ParamSpec::integer("lambda", nullptr, 2, max_lambda,

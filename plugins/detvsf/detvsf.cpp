@@ -23,7 +23,7 @@ const char* const kCitation =
     "S. Das, A. Konar, U. K. Chakraborty, Two improved differential evolution schemes for "
     "faster global search, Proc. GECCO 2005, ACM, pp. 991-998, doi:10.1145/1068009.1068177. "
     "RESOLUTION: the DETVSF formula as usually quoted decays to 0 instead of F_min (erratum, "
-    "algorithms.md §2.2); implemented as F = F_max - (F_max - F_min) tau, tau = nfe/MaxFEs at "
+    "docs/algorithms.md#detvsf); implemented as F = F_max - (F_max - F_min) tau, tau = nfe/MaxFEs at "
     "the start of each generation. F_max = 1.2 and F_min = 0.4 are RECALLED, not checked "
     "against the paper. DERSF F = 0.5 (1 + U(0,1)) is SECONDARY, drawn per trial vector "
     "(RESOLUTION). Measured with the defaults (NP = 100) on sphere-10 at 50 000 evaluations, "

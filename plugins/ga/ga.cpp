@@ -29,7 +29,7 @@ class GeneticAlgorithm : public Optimizer {
             "TEC 6(2):182-197, 2002 (bounded operators, defaults). L. J. Eshelman, "
             "J. D. Schaffer, Real-coded genetic algorithms and interval-schemata, FOGA 2, 1993 "
             "(BLX-alpha). RESOLUTION: the single-objective configuration is this project's "
-            "choice (algorithms.md §5).",
+            "choice (docs/algorithms.md#ga).",
             {ParamSpec::integer("np", 100, 4, 100000,
                                 "population size N; each generation breeds N - elites offspring"),
              ParamSpec::integer("elites", 2, 0, 100000,

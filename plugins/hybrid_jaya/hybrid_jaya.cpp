@@ -25,7 +25,7 @@ class HybridJaya : public Optimizer {
     return {"hybrid_jaya",
             "[RECONSTRUCTION] HJaya (Jaya+DE hybrid): a Jaya phase then a DE/rand/1/bin phase "
             "each iteration, normalised coordinates",
-            "RECONSTRUCTION (algorithms.md §7.2): the hybrid Jaya cited for Bouc-Wen/MFC "
+            "RECONSTRUCTION (docs/algorithms.md#hybrid-jaya): the hybrid Jaya cited for Bouc-Wen/MFC "
             "identification could not be located; this Jaya + DE/rand/1/bin hybrid is this "
             "project's rebuild. Components: R. Venkata Rao, Jaya, Int. J. Industrial "
             "Engineering Computations 7(1):19-34, 2016, doi:10.5267/j.ijiec.2015.8.004; "

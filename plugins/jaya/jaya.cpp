@@ -26,7 +26,7 @@ class Jaya : public Optimizer {
             "constrained and unconstrained optimization problems, International Journal of "
             "Industrial Engineering Computations 7(1):19-34, 2016, doi:10.5267/j.ijiec.2015.8.004. "
             "RESOLUTION: fresh r1, r2 per candidate and variable, best/worst fixed per "
-            "iteration, CLIP repair, normalised coordinates, NP 50 (algorithms.md §7.1).",
+            "iteration, CLIP repair, normalised coordinates, NP 50 (docs/algorithms.md#jaya).",
             {ParamSpec::integer("np", 50, 2, 100000, "population size")}};
   }
 

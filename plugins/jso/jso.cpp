@@ -24,7 +24,7 @@ class Jso : public Optimizer {
             "stage-wise F/CR clamps",
             "J. Brest, M. S. Maucec, B. Boskovic, Single objective real-parameter optimization: "
             "Algorithm jSO, Proc. IEEE CEC 2017, pp. 1311-1318, doi:10.1109/CEC.2017.7969456. "
-            "Details follow the authors' reference code (algorithms.md §8.2). RESOLUTION: p "
+            "Details follow the authors' reference code (docs/algorithms.md#jso). RESOLUTION: p "
             "decreases linearly 0.25 -> 0.125 as in the code (some descriptions write it "
             "increasing); a TERMINAL CR slot is averaged like a number as in the code; successes "
             "with an infinite fitness gain are left out of the memory update; N_init is at least "

@@ -21,7 +21,7 @@ class Lshade : public Optimizer {
             "R. Tanabe, A. S. Fukunaga, Improving the search performance of SHADE using linear "
             "population size reduction, Proc. IEEE CEC 2014, pp. 1658-1665, "
             "doi:10.1109/CEC.2014.6900380 (SHADE: Tanabe & Fukunaga, CEC 2013, pp. 71-78). "
-            "RESOLUTION (algorithms.md §0.9, §8.1): a TERMINAL CR slot stays terminal as in the "
+            "RESOLUTION (docs/algorithms.md#success-history, #l-shade): a TERMINAL CR slot stays terminal as in the "
             "paper; successes with an infinite fitness gain are left out of the memory update; "
             "the archive is trimmed by random deletion; the reduction runs on the budget "
             "fraction used (nfe / MaxFEs, or the iteration or time fraction when there is no "

@@ -25,7 +25,7 @@ class Mede : public Optimizer {
             "Vibroengineering PROCEDIA, doi:10.21595/vp.2023.23309 - unverified). Structure as "
             "in the paper (eqs. 16-19); RESOLUTION: the parameter values (NP, F range, CR, p), "
             "equal strategy probabilities and the absence of an archive are not published and "
-            "are this project's choices (algorithms.md §3.2).",
+            "are this project's choices (docs/algorithms.md#mede).",
             {ParamSpec::integer("np", nullptr, 4, 100000,
                                 "population size; auto = 10 x dimension, at least 30"),
              ParamSpec::real("f_min", 0.4, 0.0, 2.0, "lower end of the per-individual F"),

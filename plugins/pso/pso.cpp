@@ -50,7 +50,7 @@ class ParticleSwarm : public Optimizer {
             "complex space, IEEE TEC 6(1):58-73, 2002, doi:10.1109/4235.985692; Vmax = Xmax with "
             "constriction after R. C. Eberhart, Y. Shi, CEC 2000, pp. 84-88. RESOLUTION: swarm "
             "size, Vmax 0.2 of the range (inertia), absorbing walls, synchronous update and "
-            "normalised coordinates are this project's choices (algorithms.md §6).",
+            "normalised coordinates are this project's choices (docs/algorithms.md#pso).",
             {ParamSpec::integer("swarm", 40, 2, 100000, "number of particles"),
              ParamSpec::choice("variant", "inertia", {"inertia", "constriction"},
                                "velocity rule: linearly decreasing inertia weight, or "

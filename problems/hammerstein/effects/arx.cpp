@@ -57,7 +57,7 @@ class Arx : public Effect {
         "second-order discrete transfer function (b0 + b1 z⁻¹ + b2 z⁻²)/(1 + a1 z⁻¹ + a2 z⁻²), "
         "b0 fixed by unit static gain";
     i.citation =
-        "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (DESIGN.md §3)";
+        "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (docs/design.md#hammerstein-seed-model)";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"a1", -2.0, 2.0, 0.0, 0, 0, "", "first denominator coefficient"},

@@ -44,7 +44,7 @@ class Hysteresis : public Effect {
     i.summary = "rate-independent Bouc-Wen hysteresis loop driven by the input increments";
     i.citation =
         "Bouc, Proc. 4th Conf. Nonlinear Oscillations, 1967; Wen, J. Eng. Mech. 102 (1976); "
-        "increment form as in the seed Hammerstein model (DESIGN.md §3)";
+        "increment form as in the seed Hammerstein model (docs/design.md#hammerstein-seed-model)";
     i.stage = EffectStage::Nonlinearity;
     i.params = {
         {"A", -10.0, 10.0, 0.0, 1, -1, "",

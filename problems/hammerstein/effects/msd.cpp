@@ -41,7 +41,7 @@ class Msd : public Effect {
         "bilinear";
     i.citation =
         "Hassani, Tjahjowidodo & Do, Mech. Syst. Signal Process. 49 (2014); seed Hammerstein "
-        "model (DESIGN.md §3) for the bilinear discretisation";
+        "model (docs/design.md#hammerstein-seed-model) for the bilinear discretisation";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"period", 0.0, 0.2, 0.0, 0, 0, "s",
