@@ -33,8 +33,8 @@ do for [ext in "svg png pdf"] {
   set ylabel output_label
   set ytics -0.002, 0.001, 0.002034179072
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
-  plot "fit_model.csv" skip 1 using 1:3 with lines lw 1 lc rgb "#707070" title "measured", \
-       "fit_model.csv" skip 1 using 1:4 with lines lw 1.5 lc rgb "#0072B2" title "model"
+  plot "fit_model.csv" skip 1 using 1:3 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
+       "fit_model.csv" skip 1 using 1:4 with lines lw 1 lc rgb "#0072B2" title "model"
   unset label
   unset title
   unset key
@@ -45,8 +45,8 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-1.196216715e-06:1.196216715e-06]
-  set ytics -1e-06, 1e-06, 1e-06
+  set yrange [-5.990262249e-07:5.990262249e-07]
+  set ytics -5e-07, 5e-07, 5e-07
   plot "fit_model.csv" skip 1 using 1:5 with lines lw 1 lc rgb "#D55E00" notitle
   unset multiplot
   unset arrow

@@ -41,8 +41,9 @@ do for [ext in "svg png pdf"] {
     # One key for all panels, in one row above the first.
     if (i == 1) { set key at screen 0.98, graph 1.02 right bottom vertical maxrows 1 \
                   samplen 2.5 } else { unset key }
-    plot "fit_model_loops.dat" index i-1 using 1:2 with lines lw 1 lc rgb "#707070" title "measured", \
-         "fit_model_loops.dat" index i-1 using 1:3 with lines lw 1.5 lc rgb "#0072B2" title "model"
+    # Measured first, as a broad light band; the model thin on top of it.
+    plot "fit_model_loops.dat" index i-1 using 1:2 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
+         "fit_model_loops.dat" index i-1 using 1:3 with lines lw 1 lc rgb "#0072B2" title "model"
   }
   unset multiplot
   unset label

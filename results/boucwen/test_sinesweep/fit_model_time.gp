@@ -31,10 +31,10 @@ do for [ext in "svg png pdf"] {
   set format x ""
   unset xlabel
   set ylabel output_label
-  set ytics -0.001, 0.001, 0.001543880057
+  set ytics -0.001, 0.001, 0.001543978783
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
-  plot "fit_model.csv" skip 1 using 1:3 with lines lw 1 lc rgb "#707070" title "measured", \
-       "fit_model.csv" skip 1 using 1:4 with lines lw 1.5 lc rgb "#0072B2" title "model"
+  plot "fit_model.csv" skip 1 using 1:3 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
+       "fit_model.csv" skip 1 using 1:4 with lines lw 1 lc rgb "#0072B2" title "model"
   unset label
   unset title
   unset key
@@ -45,7 +45,7 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-7.57988991e-06:7.57988991e-06]
+  set yrange [-7.592036285e-06:7.592036285e-06]
   set ytics -5e-06, 5e-06, 5e-06
   plot "fit_model.csv" skip 1 using 1:5 with lines lw 1 lc rgb "#D55E00" notitle
   unset multiplot

@@ -19,7 +19,14 @@ set autoscale xfix
 set offsets 0, 0, graph 0.2, graph 0.05
 set tmargin 4
 set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
-set object rect from 40.95933333, graph 0 to 54.61266667, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 5.119333333, graph 0 to 6.825999997, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 11.94600003, graph 0 to 13.65266667, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 18.77266663, graph 0 to 20.47933337, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 25.59933333, graph 0 to 27.30599997, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 32.42600003, graph 0 to 34.13266667, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 39.25266663, graph 0 to 40.95933337, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 46.07933333, graph 0 to 47.78599997, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
+set object rect from 52.90600003, graph 0 to 54.61266667, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

@@ -33,8 +33,8 @@ do for [ext in "svg png pdf"] {
   set ylabel output_label
   set ytics -0.002, 0.001, 0.002258445566
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
-  plot "fit_model.csv" skip 1 using 1:3 with lines lw 1 lc rgb "#707070" title "measured", \
-       "fit_model.csv" skip 1 using 1:4 with lines lw 1.5 lc rgb "#0072B2" title "model"
+  plot "fit_model.csv" skip 1 using 1:3 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
+       "fit_model.csv" skip 1 using 1:4 with lines lw 1 lc rgb "#0072B2" title "model"
   unset label
   unset title
   unset key
@@ -45,7 +45,7 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-3.242333558e-05:3.242333558e-05]
+  set yrange [-3.252273677e-05:3.252273677e-05]
   set ytics -2e-05, 2e-05, 2e-05
   plot "fit_model.csv" skip 1 using 1:5 with lines lw 1 lc rgb "#D55E00" notitle
   unset multiplot
