@@ -111,6 +111,39 @@ TEST(ModelFit, FitRecordRoundTripsBitForBit) {
   EXPECT_EQ(r.parameters_json()[0]["unit"], "µm/V");
 }
 
+TEST(ModelFit, FitRecordKeepsACausalInputHoldAndReadsOldFilesAsSpline) {
+  const auto s = synthetic("feedback_hysteresis",
+                           {{"gain", 0.5}, {"feedback_hysteresis.period", 0.05}, {"feedback_hysteresis.zeta", 0.3},
+                            {"feedback_hysteresis.alpha", 0.5}, {"feedback_hysteresis.beta_gamma", 0.01},
+                            {"feedback_hysteresis.beta_delta", 0.0}});
+  test_support::TempDir dir;
+  const Eigen::VectorXd x = s.model.from_physical(s.data.truth["parameters"], s.model_data.scales, "truth");
+  const FitRecord spline = make_fit_record(s.model, x, s.model_data, DataSource{}, HoldoutSpec{}, 5);
+  EXPECT_FALSE(spline.to_json().contains("input_hold")) << "default fits are written as before";
+  std::ofstream(dir.path() / "spline.json") << spline.to_json().dump(2);
+  EXPECT_EQ(FitRecord::read(dir.path() / "spline.json").model.input_hold(), InputHold::Spline);
+
+  Model linear = s.model;
+  linear.set_input_hold(InputHold::Linear);
+  const FitRecord r = make_fit_record(linear, x, s.model_data, DataSource{}, HoldoutSpec{}, 5);
+  EXPECT_EQ(r.to_json()["input_hold"], "linear");
+  std::ofstream(dir.path() / "linear.json") << r.to_json().dump(2);
+  EXPECT_EQ(FitRecord::read(dir.path() / "linear.json").model.input_hold(), InputHold::Linear);
+
+  nlohmann::json bad = r.to_json();
+  bad["input_hold"] = "cubic";
+  std::ofstream(dir.path() / "bad.json") << bad.dump(2);
+  try {
+    FitRecord::read(dir.path() / "bad.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.json input_hold: unknown input hold 'cubic'; valid: spline, "
+                                         "linear, zoh"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ModelFit, BrokenFitFilesNameTheProblem) {
   test_support::TempDir dir;
   std::ofstream(dir.path() / "a.json") << R"({"format": "hystbench-fit/1", "model": "msd",

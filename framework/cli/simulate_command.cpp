@@ -16,6 +16,7 @@ namespace {
 
 struct SimulateOptions {
   std::string params, excitation, out, form = "increment", input_unit, output_unit, model;
+  std::string input_hold = "spline";
   int substeps = 0;
   double noise = 0.01;
   std::uint64_t seed = 1;
@@ -37,6 +38,7 @@ SyntheticData make_data(const SimulateOptions& o) {
   if (!o.model.empty()) {
     Model model = Model::parse(o.model);
     model.set_substeps(o.substeps);
+    model.set_input_hold(parse_input_hold(o.input_hold, "--input-hold"));
     return make_model_synthetic_data(model, values, excitation, o.noise, o.seed, o.params);
   }
   const auto params = read_hammerstein_params(values, o.params);
@@ -56,6 +58,7 @@ void simulate(const SimulateOptions& o) {
   const std::string command = "hystbench simulate" +
                               (o.model.empty() ? "" : " --model " + o.model) +
                               (o.substeps ? " --substeps " + std::to_string(o.substeps) : "") +
+                              (o.input_hold != "spline" ? " --input-hold " + o.input_hold : "") +
                               " --params " + o.params + " --excitation " +
                               o.excitation + " --noise " + noise.str() +
                               " --seed " + std::to_string(o.seed) +
@@ -92,6 +95,10 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--substeps", o->substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
+  cmd->add_option("--input-hold", o->input_hold,
+                  "input between samples for ODE effects: spline (through the record), linear or "
+                  "zoh (causal, as a stream)")
+      ->capture_default_str()->check(CLI::IsMember({"spline", "linear", "zoh"}));
   cmd->add_option("--excitation", o->excitation, "JSON excitation spec (sine / sweep / steps segments)")
       ->required();
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")

@@ -48,6 +48,9 @@ nlohmann::json FitRecord::to_json() const {
                       {"substeps", model.substeps()},
                       {"data", data.to_json()},
                       {"holdout", holdout.text()}};
+  // Written only when it is not the default, so that the files of default
+  // fits are what they were before the hold was a choice.
+  if (model.input_hold() != InputHold::Spline) j["input_hold"] = to_string(model.input_hold());
   for (const auto& [key, value] : details.items()) j[key] = value;
   return j;
 }
@@ -66,6 +69,7 @@ FitRecord FitRecord::read(const std::filesystem::path& path) {
     throw InputError(where + ": not a fit file written by `hystbench fit` (format key)");
   FitRecord r{Model::parse(require(j, "model", where).get<std::string>(), where + " model")};
   r.model.set_substeps(j.value("substeps", 0));
+  r.model.set_input_hold(parse_input_hold(j.value("input_hold", "spline"), where + " input_hold"));
   r.scales = SignalScales::from_json(require(j, "scales", where), where + " scales");
   const auto& data = require(j, "data", where);
   r.data.path = data.value("file", "");

@@ -30,6 +30,7 @@ SyntheticData make_model_synthetic_data(const Model& model, const nlohmann::json
       {"noise_floor_sse", (m.y - clean).squaredNorm()},
       {"expected_noise_sse", double(m.size()) * sd * sd},
       {"excitation", excitation_spec}};
+  if (model.input_hold() != InputHold::Spline) truth["input_hold"] = to_string(model.input_hold());
   return {std::move(m), std::move(truth)};
 }
 

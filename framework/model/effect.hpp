@@ -12,6 +12,7 @@
 //     static hystbench::EffectInfo info();   // name, stage, parameters, signature statistic
 //     bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
 //                Eigen::Ref<Eigen::VectorXd> signal) const override;
+//     // Optional: stepper() (streaming) and apply_lanes() (batched).
 //   };
 //   HYSTBENCH_EFFECT(Creep)
 //
@@ -27,6 +28,8 @@
 
 #include "framework/core/registry.hpp"
 #include "framework/model/effect_lanes.hpp"
+#include "framework/model/effect_stepper.hpp"
+#include "framework/model/input_hold.hpp"
 #include "framework/model/residual_signature.hpp"
 
 namespace hystbench {
@@ -65,6 +68,10 @@ struct SignalContext {
   // Internal integration sub-steps per sample for effects that integrate an
   // ODE (a model option; 0 = the effect's own default).
   int substeps = 0;
+  // How such effects reconstruct their input between samples (a model
+  // option, input_hold.hpp). Last, so that aggregate initialisations
+  // written before it existed keep the offline default.
+  InputHold hold = InputHold::Spline;
 };
 
 class Effect {
@@ -83,6 +90,14 @@ class Effect {
   virtual bool has_lanes() const { return false; }
   virtual void apply_lanes(const LaneParams& /*p*/, const LaneContext& /*ctx*/,
                            std::span<LaneVector> /*signal*/, LaneMask& /*ok*/) const {}
+
+  // Streaming form (effect_stepper.hpp): the effect one sample at a time,
+  // for StreamingModel. Null when `p` is invalid. The default replays
+  // apply() on the whole history at every sample (replay_stepper.hpp):
+  // exact for any causal effect but O(k) per sample, so effects that may
+  // run in long streams override it. The stepper may refer to this effect.
+  virtual std::unique_ptr<EffectStepper> stepper(std::span<const double> p,
+                                                 const StepContext& ctx) const;
 };
 
 struct EffectInfo {

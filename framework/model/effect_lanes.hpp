@@ -17,6 +17,8 @@
 #include <span>
 #include <vector>
 
+#include "framework/model/input_hold.hpp"
+
 namespace hystbench {
 
 #if defined(__AVX512F__)
@@ -57,6 +59,7 @@ struct LaneContext {
   const Eigen::VectorXd* time = nullptr;
   std::span<const LaneVector> stage_input;
   int substeps = 0;
+  InputHold hold = InputHold::Spline;
 };
 
 // How an effect's parameters set it up, for one candidate.

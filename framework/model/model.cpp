@@ -143,6 +143,7 @@ Model Model::with(const std::string& effect) const {
     names.push_back(effect);
   Model m(names);
   m.substeps_ = substeps_;
+  m.input_hold_ = input_hold_;
   return m;
 }
 
@@ -151,6 +152,7 @@ Model Model::without(const std::string& effect) const {
   names.erase(std::remove(names.begin(), names.end(), effect), names.end());
   Model m(names);
   m.substeps_ = substeps_;
+  m.input_hold_ = input_hold_;
   return m;
 }
 
@@ -182,7 +184,7 @@ bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData
   // parallel branches (SignalContext::stage_input) also see.
   Eigen::VectorXd stage_input = data.u;
   y = data.u;
-  SignalContext ctx{data.sample_time, &data.t, &stage_input, substeps_};
+  SignalContext ctx{data.sample_time, &data.t, &stage_input, substeps_, input_hold_};
   auto run_stage = [&](EffectStage stage) {
     for (const auto& e : entries_) {
       if (e.info->stage != stage) continue;
@@ -203,7 +205,8 @@ bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData
 }
 
 bool Model::has_lanes() const {
-  return std::all_of(entries_.begin(), entries_.end(), [](const Entry& e) { return e.effect->has_lanes(); });
+  return std::all_of(entries_.begin(), entries_.end(),
+                     [](const ChainEntry& e) { return e.effect->has_lanes(); });
 }
 
 void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data,
@@ -213,7 +216,7 @@ void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const Mod
   for (Eigen::Index k = 0; k < n; ++k) y[k] = LaneVector{} + data.u[k];
   ok.fill(true);
   std::vector<LaneVector> stage_input = y;
-  LaneContext ctx{data.sample_time, &data.t, stage_input, substeps_};
+  LaneContext ctx{data.sample_time, &data.t, stage_input, substeps_, input_hold_};
   auto run_stage = [&](EffectStage stage) {
     for (const auto& e : entries_) {
       if (e.info->stage != stage) continue;

@@ -51,6 +51,19 @@ class Model {
   // Integration sub-steps per sample for ODE effects (0 = their default).
   void set_substeps(int substeps) { substeps_ = substeps; }
   int substeps() const { return substeps_; }
+  // How ODE effects reconstruct the input between samples in simulate()
+  // (input_hold.hpp; the spline unless set).
+  void set_input_hold(InputHold hold) { input_hold_ = hold; }
+  InputHold input_hold() const { return input_hold_; }
+
+  // The effects in chain order, each with the index of its first parameter
+  // (StreamingModel runs them one sample at a time).
+  struct ChainEntry {
+    const EffectInfo* info;
+    std::shared_ptr<const Effect> effect;
+    int offset;  // index of its first parameter
+  };
+  const std::vector<ChainEntry>& chain() const { return entries_; }
 
   // Normalised model output for `x`. Returns false when the parameters make
   // the model unstable; `y` is then unspecified.
@@ -75,18 +88,14 @@ class Model {
                                 const std::string& where) const;
 
  private:
-  struct Entry {
-    const EffectInfo* info;
-    std::shared_ptr<const Effect> effect;
-    int offset;  // index of its first parameter
-  };
   void build(std::vector<std::string> names, const std::string& where);
 
   std::vector<std::string> names_;
-  std::vector<Entry> entries_;
+  std::vector<ChainEntry> entries_;
   std::vector<EffectParam> params_;  // gain first
   std::vector<std::string> owner_;   // effect of each parameter ("" for the gain)
   int substeps_ = 0;
+  InputHold input_hold_ = InputHold::Spline;
 };
 
 // Physical scale factor y^y_power · u^u_power of one parameter.

@@ -60,11 +60,25 @@ class Asymmetry : public Effect {
     });
   }
 
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    std::array<double, 1> c;
+    return stepper_for(gain_like_setup(p, c), [&] {
+      return kernel_stepper<Stateless>(
+          [c](Stateless&, double signal, double v) { return sample(c, signal, v); });
+    });
+  }
+
  private:
-  // signal += d2 * v^2; returns d2 (finite: nothing here can diverge).
+  // One sample, shared by the batch and streaming forms: signal + d2·v².
+  template <class V>
+  static V sample(const std::array<V, 1>& c, V signal, V v) {
+    return signal + c[0] * (v * v);
+  }
+
+  // Returns d2 (finite: nothing here can diverge).
   template <class V>
   static V run(const std::array<V, 1>& c, const V* v, V* s, Eigen::Index n) {
-    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0] * (v[k] * v[k]);
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, s[k], v[k]);
     return c[0];
   }
 };

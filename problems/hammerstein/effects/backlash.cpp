@@ -47,16 +47,34 @@ class Backlash : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext&,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double r = p[0];
-    if (!std::isfinite(r) || r < 0.0) return false;
-    if (r == 0.0) return true;
-    double* s = signal.data();
-    double f = 0.0;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      f = std::max(s[k] - r, std::min(s[k] + r, f));
-      s[k] = f;
-    }
+    const EffectSetup s = setup(p);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
+    State state;
+    for (Eigen::Index k = 0; k < signal.size(); ++k) signal[k] = sample(p[0], state, signal[k]);
     return true;
+  }
+
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    return stepper_for(setup(p), [r = p[0]] {
+      return kernel_stepper<State>([r](State& state, double v, double) { return sample(r, state, v); });
+    });
+  }
+
+ private:
+  static EffectSetup setup(std::span<const double> p) {
+    const double r = p[0];
+    if (!std::isfinite(r) || r < 0.0) return EffectSetup::Invalid;
+    return r == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
+  }
+
+  struct State {
+    double f = 0.0;  // F[-1] = 0
+  };
+
+  // One sample of the play operator, shared by the batch and streaming forms.
+  static double sample(double r, State& state, double v) {
+    state.f = std::max(v - r, std::min(v + r, state.f));
+    return state.f;
   }
 };
 

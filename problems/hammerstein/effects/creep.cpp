@@ -79,6 +79,16 @@ class Creep : public Effect {
     });
   }
 
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
+    std::array<double, 1> c;
+    return stepper_for(setup(p, ctx.sample_time, c), [&] {
+      return kernel_stepper<State<double>>(
+          [c, lags = lags_at(ctx.sample_time)](State<double>& state, double signal, double y0) {
+            return sample(c, lags, state, signal, y0);
+          });
+    });
+  }
+
  private:
   // c = (gamma).
   static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 1>& c) {
@@ -87,24 +97,42 @@ class Creep : public Effect {
     return Ts > 0.0 && std::isfinite(Ts) ? EffectSetup::Run : EffectSetup::Invalid;
   }
 
+  // x_i[k] = a_i·x_i[k-1] + b_i·y0[k] for the sample time Ts.
+  struct Lags {
+    std::array<double, 4> a, b;
+  };
+  static Lags lags_at(double Ts) {
+    Lags l{};
+    for (std::size_t i = 0; i < l.a.size(); ++i) {
+      l.a[i] = std::exp(-Ts / kTimeConstants[i]);
+      l.b[i] = -std::expm1(-Ts / kTimeConstants[i]);  // 1 − a, accurately
+    }
+    return l;
+  }
+
+  // The lags at rest.
+  template <class V>
+  struct State {
+    V x0{}, x1{}, x2{}, x3{};
+  };
+
+  // One sample, shared by the batch and streaming forms.
+  template <class V>
+  static V sample(const std::array<V, 1>& c, const Lags& l, State<V>& x, V signal, V y0) {
+    x.x0 = l.a[0] * x.x0 + l.b[0] * y0;
+    x.x1 = l.a[1] * x.x1 + l.b[1] * y0;
+    x.x2 = l.a[2] * x.x2 + l.b[2] * y0;
+    x.x3 = l.a[3] * x.x3 + l.b[3] * y0;
+    return signal + c[0] * ((x.x0 + x.x1) + (x.x2 + x.x3));
+  }
+
   // Returns the sum of the lag states at the end.
   template <class V>
   static V run(const std::array<V, 1>& c, double Ts, const V* y0, V* s, Eigen::Index n) {
-    std::array<double, 4> a{}, b{};
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      a[i] = std::exp(-Ts / kTimeConstants[i]);
-      b[i] = -std::expm1(-Ts / kTimeConstants[i]);  // 1 − a, accurately
-    }
-    const V gamma = c[0];
-    V x0{}, x1{}, x2{}, x3{};
-    for (Eigen::Index k = 0; k < n; ++k) {
-      x0 = a[0] * x0 + b[0] * y0[k];
-      x1 = a[1] * x1 + b[1] * y0[k];
-      x2 = a[2] * x2 + b[2] * y0[k];
-      x3 = a[3] * x3 + b[3] * y0[k];
-      s[k] += gamma * ((x0 + x1) + (x2 + x3));
-    }
-    return x0 + x1 + x2 + x3;
+    const Lags l = lags_at(Ts);
+    State<V> x;
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, l, x, s[k], y0[k]);
+    return x.x0 + x.x1 + x.x2 + x.x3;
   }
 };
 

@@ -18,6 +18,7 @@
 // a delay fitted at one sample rate means a different time at another.
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
@@ -60,44 +61,92 @@ class Delay : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext&,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double d = p[0];
-    // The upper limit keeps the integer part representable; any delay longer
-    // than the record simply gives zeros.
-    if (!std::isfinite(d) || d < 0.0 || d > 1e12) return false;
-    if (d == 0.0) return true;
-    const Eigen::Index size = signal.size();
-    const Eigen::Index n = static_cast<Eigen::Index>(std::floor(d));
-    const double f = d - double(n);
+    Weights c;
+    const EffectSetup setup_result = setup(p, c);
+    if (setup_result != EffectSetup::Run) return setup_result == EffectSetup::PassThrough;
+    const Eigen::Index size = signal.size(), n = c.n;
     double* s = signal.data();
     // In place from the end: output k reads only samples at or before k.
-    if (f == 0.0) {
+    if (c.integer) {
       for (Eigen::Index k = size - 1; k >= 0; --k) s[k] = k >= n ? s[k - n] : 0.0;
       return true;
-    }
-    const double t = 1.0 - f, t2 = t * t, t3 = t2 * t;
-    const double w0 = 0.5 * (-t + 2.0 * t2 - t3);
-    double w1 = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
-    double w2 = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
-    double w3 = 0.5 * (t3 - t2);
-    Eigen::Index ahead = 1;  // index of the fourth point relative to k − n
-    if (n == 0) {
-      // v[k+1] is not known yet: extrapolate it linearly, 2·v[k] − v[k−1].
-      w2 += 2.0 * w3;
-      w1 -= w3;
-      w3 = 0.0;
-      ahead = 0;
     }
     auto at = [s](Eigen::Index i) { return i >= 0 ? s[i] : 0.0; };
     const Eigen::Index first_full = std::min(size, n + 2);
     for (Eigen::Index k = size - 1; k >= first_full; --k) {
       const double* q = s + (k - n);
-      s[k] = ((w0 * q[-2] + w1 * q[-1]) + w2 * q[0]) + w3 * q[ahead];
+      s[k] = combine(c, q[-2], q[-1], q[0], q[c.ahead]);
     }
     for (Eigen::Index k = first_full - 1; k >= 0; --k) {
       const Eigen::Index j = k - n;
-      s[k] = ((w0 * at(j - 2) + w1 * at(j - 1)) + w2 * at(j)) + w3 * at(j + ahead);
+      s[k] = combine(c, at(j - 2), at(j - 1), at(j), at(j + c.ahead));
     }
     return true;
+  }
+
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    Weights c;
+    return stepper_for(setup(p, c), [&] {
+      return kernel_stepper<History>([c](History& h, double v, double) { return sample(c, h, v); });
+    });
+  }
+
+ private:
+  // d = n + f; for f > 0 the Catmull-Rom weights of v[j-1], v[j], v[j+1],
+  // v[j+2] (j = k − n − 1), the last point at index k − n + ahead.
+  struct Weights {
+    Eigen::Index n = 0;
+    bool integer = true;
+    double w0 = 0.0, w1 = 0.0, w2 = 0.0, w3 = 0.0;
+    Eigen::Index ahead = 1;
+  };
+
+  static EffectSetup setup(std::span<const double> p, Weights& c) {
+    const double d = p[0];
+    // The upper limit keeps the integer part representable; any delay longer
+    // than the record simply gives zeros.
+    if (!std::isfinite(d) || d < 0.0 || d > 1e12) return EffectSetup::Invalid;
+    if (d == 0.0) return EffectSetup::PassThrough;
+    c.n = static_cast<Eigen::Index>(std::floor(d));
+    const double f = d - double(c.n);
+    c.integer = f == 0.0;
+    const double t = 1.0 - f, t2 = t * t, t3 = t2 * t;
+    c.w0 = 0.5 * (-t + 2.0 * t2 - t3);
+    c.w1 = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
+    c.w2 = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
+    c.w3 = 0.5 * (t3 - t2);
+    if (c.n == 0) {
+      // v[k+1] is not known yet: extrapolate it linearly, 2·v[k] − v[k−1].
+      c.w2 += 2.0 * c.w3;
+      c.w1 -= c.w3;
+      c.w3 = 0.0;
+      c.ahead = 0;
+    }
+    return EffectSetup::Run;
+  }
+
+  // One output from the inputs v[k−n−2], v[k−n−1], v[k−n], v[k−n+ahead]:
+  // the batch and streaming forms both sum them in this order.
+  static double combine(const Weights& c, double a, double b, double x, double e) {
+    return ((c.w0 * a + c.w1 * b) + c.w2 * x) + c.w3 * e;
+  }
+
+  // The streaming form's memory: the last n + 3 inputs (fewer at the start).
+  struct History {
+    std::deque<double> v;
+    Eigen::Index count = 0;  // inputs seen
+    // Input j, 0 before the record (j must be one of the inputs kept).
+    double at(Eigen::Index j) const {
+      return j >= 0 ? v[std::size_t(j - (count - Eigen::Index(v.size())))] : 0.0;
+    }
+  };
+
+  static double sample(const Weights& c, History& h, double v) {
+    h.v.push_back(v);
+    if (Eigen::Index(h.v.size()) > c.n + 3) h.v.pop_front();
+    const Eigen::Index j = h.count++ - c.n;  // k − n
+    if (c.integer) return h.at(j);
+    return combine(c, h.at(j - 2), h.at(j - 1), h.at(j), h.at(j + c.ahead));
   }
 };
 

@@ -53,11 +53,31 @@ class Drift : public Effect {
     });
   }
 
+  // Time is k·Ts at sample k, counted by the stepper; the record's time
+  // column (from 0) equals it to rounding.
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
+    std::array<double, 1> c;
+    return stepper_for(gain_like_setup(p, c), [&] {
+      struct Clock {
+        double samples = 0.0;
+      };
+      return kernel_stepper<Clock>([c, ts = ctx.sample_time](Clock& clock, double signal, double) {
+        return sample(c, signal, ts * clock.samples++);
+      });
+    });
+  }
+
  private:
-  // signal += c1 * t; returns c1.
+  // One sample, shared by the batch and streaming forms: signal + c1·t.
+  template <class V>
+  static V sample(const std::array<V, 1>& c, V signal, double t) {
+    return signal + c[0] * t;
+  }
+
+  // Returns c1.
   template <class V>
   static V run(const std::array<V, 1>& c, const double* t, V* s, Eigen::Index n) {
-    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0] * t[k];
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, s[k], t[k]);
     return c[0];
   }
 };

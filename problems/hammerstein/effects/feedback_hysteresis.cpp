@@ -23,11 +23,16 @@
 //
 // Integration: classical RK4 with `substeps` steps per sample (default 20,
 // raised automatically when the oscillator is too stiff for the step), the
-// input interpolated between samples with a not-a-knot cubic spline. A step
-// in which the velocity or z changes sign is split at the crossing, where
-// |y'| and |z| have their kinks. The state starts at rest (y = y' = z = 0).
+// input reconstructed between samples by the model's input hold
+// (input_hold.hpp): by default a not-a-knot cubic spline through the record,
+// the most accurate offline; linear or zero-order hold in a stream, where
+// output k may depend on inputs up to k only. A step in which the velocity
+// or z changes sign is split at the crossing, where |y'| and |z| have their
+// kinks. The state starts at rest (y = y' = z = 0) and output 0 is 0; output
+// k + 1 is the state after the interval from sample k to k + 1.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -94,31 +99,119 @@ class FeedbackHysteresis : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
+    Coefficients c;
+    const EffectSetup s = setup(p, ctx.sample_time, ctx.substeps, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
+    if (signal.size() == 0) return true;
+    return ctx.hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, ctx.hold, signal);
+  }
+
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
+    Coefficients c;
+    if (!is_causal(ctx.hold)) return nullptr;  // the spline needs the whole record
+    return stepper_for(setup(p, ctx.sample_time, ctx.substeps, c), [&] {
+      return kernel_stepper<Stream>(
+          [c, hold = ctx.hold](Stream& st, double w, double) { return sample(c, hold, st, w); });
+    });
+  }
+
+ private:
+  // The oscillator in time units of samples, and its integration steps.
+  struct Coefficients {
+    double w2, c1;     // ω² and 2ζω, ω = ωn·Ts rad per sample
+    double a, bg, bd;  // z' = a y' − bg |y'| z − bd y' |z|
+    int sub;           // RK4 steps per sample
+    double h;          // their length, 1/sub
+    bool hysteretic;   // a != 0
+  };
+
+  // State (y, v = dy/dsample, z).
+  struct State {
+    double y = 0.0, v = 0.0, z = 0.0;
+  };
+
+  static EffectSetup setup(std::span<const double> p, double ts, int substeps, Coefficients& c) {
     const double period = p[0], zeta = p[1], a = p[2], bg = p[3], bd = p[4];
-    if (period == 0.0) return true;
+    if (period == 0.0) return EffectSetup::PassThrough;
     const double fn = 1.0 / period;
-    const double ts = ctx.sample_time;
     if (!(period > 0.0) || !std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !std::isfinite(a) ||
         !std::isfinite(bg) || !std::isfinite(bd) || !(ts > 0.0) || a <= -1.0)
-      return false;
-    const Eigen::Index n = signal.size();
-    if (n == 0) return true;
-
+      return EffectSetup::Invalid;
     // Time in samples: w_s = wn * Ts rad per sample. z' is rate-independent,
     // so its coefficients do not change with the time unit.
     const double ws = 2.0 * std::numbers::pi * fn * ts;
-    const double w2 = ws * ws, c1 = 2.0 * zeta * ws;
     // Largest eigenvalue modulus of the linearised system, bounded by
     // ws_eff (zeta + sqrt(zeta^2 + 1)); keep |lambda| h <= 1.
     const double stiff =
         ws * std::sqrt(1.0 + std::max(a, 0.0)) * (zeta + std::sqrt(zeta * zeta + 1.0));
-    int sub = ctx.substeps > 0 ? ctx.substeps : kDefaultSubsteps;
+    int sub = substeps > 0 ? substeps : kDefaultSubsteps;
     if (stiff > double(sub)) {
-      if (!(stiff <= double(kMaxSubsteps))) return false;
+      if (!(stiff <= double(kMaxSubsteps))) return EffectSetup::Invalid;
       sub = static_cast<int>(std::ceil(stiff));
     }
-    const double h = 1.0 / sub;
+    c = {ws * ws, 2.0 * zeta * ws, a, bg, bd, sub, 1.0 / sub, a != 0.0};
+    return EffectSetup::Run;
+  }
 
+  static double zdot(const Coefficients& c, double v, double z) {
+    return c.a * v - c.bg * std::abs(v) * z - c.bd * v * std::abs(z);
+  }
+
+  // One RK4 step of length `step` with the input at its start, middle and end.
+  static State rk4(const Coefficients& c, const State& s, double wa, double wm, double wb, double step) {
+    const double w2 = c.w2, c1 = c.c1;
+    const double half = 0.5 * step, sixth = step / 6.0;
+    const double k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(c, s.v, s.z);
+    const double y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
+    const double k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(c, v2, z2);
+    const double y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
+    const double k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(c, v3, z3);
+    const double y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
+    const double k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(c, v4, z4);
+    return State{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
+                 s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
+                 s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
+  }
+
+  // Advances x over one sample interval, shared by the batch and streaming
+  // forms under every hold: wv[j] is the input at fraction j/(2 sub) of the
+  // interval (j = 0 .. 2 sub), w_at(s) the input at any fraction s.
+  template <class InputAt>
+  static void advance(const Coefficients& c, State& x, const double* wv, InputAt w_at) {
+    for (int i = 0; i < c.sub; ++i) {
+      State next = rk4(c, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], c.h);
+      // |v| and |z| have kinks where v or z changes sign (velocity
+      // reversals, zero crossings of the hysteretic force); RK4 loses its
+      // order over a step containing one (error O(h^2) per event). Split
+      // the step at the crossing, located by linear interpolation.
+      if (c.hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0)) {
+        double theta = 1.0;
+        if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
+        if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
+        theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
+        auto at = [&](double frac) { return w_at((double(i) + frac) * c.h); };  // frac of this sub-step
+        const State mid = rk4(c, x, wv[2 * i], at(0.5 * theta), at(theta), theta * c.h);
+        next = rk4(c, mid, at(theta), at(0.5 * (1.0 + theta)), wv[2 * i + 2], (1.0 - theta) * c.h);
+      }
+      x = next;
+    }
+  }
+
+  // Also true for NaN.
+  static bool diverged(const State& x) {
+    return !(std::abs(x.y) < kDivergence && std::abs(x.z) < kDivergence && std::abs(x.v) < kDivergence);
+  }
+
+  // The input on the interval from w0 to w1 under a causal hold, at the
+  // fractions advance() reads.
+  static void fill_held(const Coefficients& c, InputHold hold, double w0, double w1, std::vector<double>& wv) {
+    wv.resize(2 * c.sub + 1);
+    for (int j = 0; j <= 2 * c.sub; ++j) wv[j] = held_value(hold, w0, w1, double(j) / double(2 * c.sub));
+  }
+
+  // Batch form with the spline through the whole record (not causal).
+  static bool run_spline(const Coefficients& c, Eigen::Ref<Eigen::VectorXd> signal) {
+    const int sub = c.sub;
     thread_local UniformCubicSpline spline;
     thread_local std::vector<UniformCubicSpline::Weights> weights;
     thread_local std::vector<double> wv;
@@ -131,60 +224,55 @@ class FeedbackHysteresis : public Effect {
       weights_for = sub;
     }
     wv.resize(2 * sub + 1);
-
-    // State (y, v = dy/dsample, z).
-    struct State {
-      double y, v, z;
-    };
-    auto zdot = [&](double v_, double z_) {
-      return a * v_ - bg * std::abs(v_) * z_ - bd * v_ * std::abs(z_);
-    };
-    // One RK4 step of length `step` with the input at its start, middle and end.
-    auto rk4 = [&](const State& s, double wa, double wm, double wb, double step) {
-      const double half = 0.5 * step, sixth = step / 6.0;
-      const double k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(s.v, s.z);
-      const double y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
-      const double k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(v2, z2);
-      const double y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
-      const double k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(v3, z3);
-      const double y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
-      const double k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(v4, z4);
-      return State{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
-                   s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
-                   s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
-    };
-    const bool hysteretic = a != 0.0;
-    State x{0.0, 0.0, 0.0};
+    State x;
     signal[0] = 0.0;
-    for (Eigen::Index k = 0; k + 1 < n; ++k) {
+    for (Eigen::Index k = 0; k + 1 < signal.size(); ++k) {
       for (int j = 0; j <= 2 * sub; ++j) wv[j] = spline.value(k, weights[j]);
-      for (int i = 0; i < sub; ++i) {
-        State next = rk4(x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], h);
-        // |v| and |z| have kinks where v or z changes sign (velocity
-        // reversals, zero crossings of the hysteretic force); RK4 loses its
-        // order over a step containing one (error O(h^2) per event). Split
-        // the step at the crossing, located by linear interpolation.
-        if (hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0)) {
-          double theta = 1.0;
-          if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
-          if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
-          theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
-          auto w_at = [&](double frac) {  // frac of this sub-step
-            return spline.value(k, UniformCubicSpline::weights((double(i) + frac) * h));
-          };
-          const State mid = rk4(x, wv[2 * i], w_at(0.5 * theta), w_at(theta), theta * h);
-          next = rk4(mid, w_at(theta), w_at(0.5 * (1.0 + theta)), wv[2 * i + 2],
-                     (1.0 - theta) * h);
-        }
-        x = next;
-      }
-      // Also false for NaN.
-      if (!(std::abs(x.y) < kDivergence && std::abs(x.z) < kDivergence &&
-            std::abs(x.v) < kDivergence))
-        return false;
+      advance(c, x, wv.data(), [&](double s) { return spline.value(k, UniformCubicSpline::weights(s)); });
+      if (diverged(x)) return false;
       signal[k + 1] = x.y;
     }
     return true;
+  }
+
+  // Batch form under a causal hold: the interval from sample k to k + 1 sees
+  // those two samples only, exactly as the stream does.
+  static bool run_held(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
+    thread_local std::vector<double> wv;
+    State x;
+    double w0 = signal[0];
+    signal[0] = 0.0;
+    for (Eigen::Index k = 0; k + 1 < signal.size(); ++k) {
+      const double w1 = signal[k + 1];
+      fill_held(c, hold, w0, w1, wv);
+      advance(c, x, wv.data(), [&](double s) { return held_value(hold, w0, w1, s); });
+      if (diverged(x)) return false;
+      signal[k + 1] = x.y;
+      w0 = w1;
+    }
+    return true;
+  }
+
+  // The streaming form's state: the oscillator and the previous input.
+  struct Stream {
+    State x;
+    double w_prev = 0.0;
+    bool started = false;
+    std::vector<double> wv;
+  };
+
+  // Sample k of the stream: integrates the interval from k − 1 to k.
+  static double sample(const Coefficients& c, InputHold hold, Stream& st, double w) {
+    if (!st.started) {  // output 0 is the state at rest
+      st.started = true;
+      st.w_prev = w;
+      return 0.0;
+    }
+    const double w0 = st.w_prev;
+    fill_held(c, hold, w0, w, st.wv);
+    advance(c, st.x, st.wv.data(), [&](double s) { return held_value(hold, w0, w, s); });
+    st.w_prev = w;
+    return diverged(st.x) ? std::numeric_limits<double>::quiet_NaN() : st.x.y;
   }
 };
 

@@ -80,6 +80,14 @@ class Hysteresis : public Effect {
     });
   }
 
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    std::array<double, 3> c;
+    return stepper_for(setup(p, c), [&] {
+      return kernel_stepper<State<double>>(
+          [c](State<double>& state, double signal, double v) { return sample(c, state, signal, v); });
+    });
+  }
+
  private:
   // c = (A, beta, gamma).
   static EffectSetup setup(std::span<const double> p, std::array<double, 3>& c) {
@@ -88,21 +96,34 @@ class Hysteresis : public Effect {
     return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
   }
 
+  // The loop at rest: h[-1] = 0, v[-1] = 0.
+  template <class V>
+  struct State {
+    V h{}, v_prev{};
+  };
+
+  // One sample, shared by the batch and streaming forms: advances the loop
+  // with the drive v and returns the signal minus h.
+  template <class V>
+  static V sample(const std::array<V, 3>& c, State<V>& state, V signal, V v) {
+    const V A = c[0], beta = c[1], gamma = c[2];
+    const V dv = v - state.v_prev;
+    state.v_prev = v;
+    state.h = (state.h * (1.0 - beta * lane_abs(dv)) + A * dv) - gamma * dv * lane_abs(state.h);
+    return signal - state.h;
+  }
+
   // One candidate (V = double) or a block (V = LaneVector); returns h at the end.
   template <class V>
   static V run(const std::array<V, 3>& c, const V* v, V* s, Eigen::Index n) {
-    const V A = c[0], beta = c[1], gamma = c[2];
-    V h{}, v_prev{};
+    State<V> state;
     for (Eigen::Index k = 0; k < n; ++k) {
-      const V dv = v[k] - v_prev;
-      v_prev = v[k];
-      h = (h * (1.0 - beta * lane_abs(dv)) + A * dv) - gamma * dv * lane_abs(h);
-      s[k] -= h;
+      s[k] = sample(c, state, s[k], v[k]);
       // Once non-finite, h stays non-finite; checking now and then ends a
       // diverging run early without a test on every sample.
-      if ((k & 1023) == 1023 && none_finite(h)) return h;
+      if ((k & 1023) == 1023 && none_finite(state.h)) return state.h;
     }
-    return h;
+    return state.h;
   }
 };
 

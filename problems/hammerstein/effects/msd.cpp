@@ -76,6 +76,14 @@ class Msd : public Effect {
     });
   }
 
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
+    std::array<double, 5> c;
+    return stepper_for(setup(p, ctx.sample_time, c), [&] {
+      return kernel_stepper<State<double>>(
+          [c](State<double>& state, double signal, double) { return sample(c, state, signal); });
+    });
+  }
+
  private:
   // c = (n0, n1, n2, a1, a2) of G = 1 - H.
   static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 5>& c) {
@@ -94,21 +102,30 @@ class Msd : public Effect {
     return EffectSetup::Run;
   }
 
-  // y = w - G·w in place; returns the last G·w.
+  // At rest: w[k<0] = 0 and (G·w)[k<0] = 0.
+  template <class V>
+  struct State {
+    V w1{}, w2{}, e1{}, e2{};
+  };
+
+  // One sample, shared by the batch and streaming forms: y = w − G·w.
+  template <class V>
+  static V sample(const std::array<V, 5>& c, State<V>& state, V w) {
+    const V n0 = c[0], n1 = c[1], n2 = c[2], a1 = c[3], a2 = c[4];
+    const V e = ((n0 * w + n1 * state.w1) + (n2 * state.w2 - a2 * state.e2)) - a1 * state.e1;
+    state.w2 = state.w1;
+    state.w1 = w;
+    state.e2 = state.e1;
+    state.e1 = e;
+    return w - e;
+  }
+
+  // In place; returns the last G·w.
   template <class V>
   static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
-    const V n0 = c[0], n1 = c[1], n2 = c[2], a1 = c[3], a2 = c[4];
-    V w1{}, w2{}, e1{}, e2{};
-    for (Eigen::Index k = 0; k < n; ++k) {
-      const V w = s[k];
-      const V e = ((n0 * w + n1 * w1) + (n2 * w2 - a2 * e2)) - a1 * e1;
-      s[k] = w - e;
-      w2 = w1;
-      w1 = w;
-      e2 = e1;
-      e1 = e;
-    }
-    return e1;
+    State<V> state;
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, state, s[k]);
+    return state.e1;
   }
 };
 

@@ -36,6 +36,11 @@ class Offset : public Effect {
     return true;
   }
 
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    return kernel_stepper<Stateless>(
+        [c = std::array<double, 1>{p[0]}](Stateless&, double signal, double) { return sample(c, signal); });
+  }
+
   bool has_lanes() const override { return true; }
   void apply_lanes(const LaneParams& p, const LaneContext&, std::span<LaneVector> signal,
                    LaneMask& ok) const override {
@@ -49,10 +54,16 @@ class Offset : public Effect {
   }
 
  private:
+  // One sample, shared by the batch and streaming forms.
+  template <class V>
+  static V sample(const std::array<V, 1>& c, V signal) {
+    return signal + c[0];
+  }
+
   // A non-finite offset is caught by the model's final check, as in apply().
   template <class V>
   static V run(const std::array<V, 1>& c, V* s, Eigen::Index n) {
-    for (Eigen::Index k = 0; k < n; ++k) s[k] += c[0];
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, s[k]);
     return V{};
   }
 };

@@ -60,13 +60,34 @@ class Saturation : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext&,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double lambda = p[0];
-    if (!std::isfinite(lambda) || lambda < 0.0) return false;
-    if (lambda == 0.0) return true;
-    const double inverse_limit = std::sqrt(lambda), limit = 1.0 / inverse_limit;
-    if (!std::isfinite(limit)) return false;
-    signal.array() = limit * (inverse_limit * signal.array()).tanh();
+    Limit c;
+    const EffectSetup s = setup(p, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
+    signal.array() = c.limit * (c.inverse * signal.array()).tanh();
     return true;
+  }
+
+  // Eigen's tanh and std::tanh may differ in the last bit: the stream
+  // matches the batch form to rounding, not bit for bit.
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
+    Limit c;
+    return stepper_for(setup(p, c), [&] {
+      return kernel_stepper<Stateless>(
+          [c](Stateless&, double signal, double) { return c.limit * std::tanh(c.inverse * signal); });
+    });
+  }
+
+ private:
+  struct Limit {
+    double inverse, limit;  // 1/L, L
+  };
+  static EffectSetup setup(std::span<const double> p, Limit& c) {
+    const double lambda = p[0];
+    if (!std::isfinite(lambda) || lambda < 0.0) return EffectSetup::Invalid;
+    if (lambda == 0.0) return EffectSetup::PassThrough;
+    c.inverse = std::sqrt(lambda);
+    c.limit = 1.0 / c.inverse;
+    return std::isfinite(c.limit) ? EffectSetup::Run : EffectSetup::Invalid;
   }
 };
 

@@ -94,32 +94,58 @@ class SecondMode : public Effect {
 
   bool apply(std::span<const double> p, const SignalContext& ctx,
              Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double g = p[0], log10_f = p[1], zeta = p[2];
-    if (!std::isfinite(g) || !std::isfinite(log10_f) || !std::isfinite(zeta)) return false;
-    if (g == 0.0) return true;
-    if (!(zeta > 0.0) || !(ctx.sample_time > 0.0) || !std::isfinite(ctx.sample_time))
-      return false;
+    Mode c;
+    const EffectSetup s = setup(p, ctx.sample_time, c);
+    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    // c = 2κ/Ts; H2(z) = (1, 2, 1) / (c² + q + 1, 2 − 2c², c² − q + 1), q = 2ζc.
-    const double omega = 2.0 * std::numbers::pi * std::pow(10.0, log10_f);
-    const double c = 2.0 / (omega * ctx.sample_time);
-    const double c2 = c * c, q = 2.0 * zeta * c;
-    const double a0 = c2 + q + 1.0;
-    const double b = 1.0 / a0;
-    const double a1 = (2.0 - 2.0 * c2) / a0, a2 = (c2 - q + 1.0) / a0;
-    if (!std::isfinite(a1) || !std::isfinite(a2) || !(b > 0.0)) return false;
     const double* w = ctx.stage_input->data();
-    double* s = signal.data();
+    State state;
+    for (Eigen::Index k = 0; k < signal.size(); ++k) signal[k] = sample(c, state, signal[k], w[k]);
+    return std::isfinite(state.m1);
+  }
+
+  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
+    Mode c;
+    return stepper_for(setup(p, ctx.sample_time, c), [&] {
+      return kernel_stepper<State>(
+          [c](State& state, double signal, double w) { return sample(c, state, signal, w); });
+    });
+  }
+
+ private:
+  // The participation g and H2(z) = b·(1, 2, 1) / (1, a1, a2).
+  struct Mode {
+    double g, b, a1, a2;
+  };
+  static EffectSetup setup(std::span<const double> p, double Ts, Mode& c) {
+    const double g = p[0], log10_f = p[1], zeta = p[2];
+    if (!std::isfinite(g) || !std::isfinite(log10_f) || !std::isfinite(zeta)) return EffectSetup::Invalid;
+    if (g == 0.0) return EffectSetup::PassThrough;
+    if (!(zeta > 0.0) || !(Ts > 0.0) || !std::isfinite(Ts)) return EffectSetup::Invalid;
+    // k = 2κ/Ts; H2(z) = (1, 2, 1) / (k² + q + 1, 2 − 2k², k² − q + 1), q = 2ζk.
+    const double omega = 2.0 * std::numbers::pi * std::pow(10.0, log10_f);
+    const double k = 2.0 / (omega * Ts);
+    const double k2 = k * k, q = 2.0 * zeta * k;
+    const double a0 = k2 + q + 1.0;
+    c = {g, 1.0 / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
+    if (!std::isfinite(c.a1) || !std::isfinite(c.a2) || !(c.b > 0.0)) return EffectSetup::Invalid;
+    return EffectSetup::Run;
+  }
+
+  // H2 at rest: w[k<0] = m[k<0] = 0.
+  struct State {
     double w1 = 0.0, w2 = 0.0, m1 = 0.0, m2 = 0.0;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      const double m = (b * ((w[k] + 2.0 * w1) + w2) - a2 * m2) - a1 * m1;
-      s[k] += g * (m - s[k]);
-      w2 = w1;
-      w1 = w[k];
-      m2 = m1;
-      m1 = m;
-    }
-    return std::isfinite(m1);
+  };
+
+  // One sample, shared by the batch and streaming forms: the second mode's
+  // response m to the stage input w, mixed in with share g.
+  static double sample(const Mode& c, State& state, double signal, double w) {
+    const double m = (c.b * ((w + 2.0 * state.w1) + state.w2) - c.a2 * state.m2) - c.a1 * state.m1;
+    state.w2 = state.w1;
+    state.w1 = w;
+    state.m2 = state.m1;
+    state.m1 = m;
+    return signal + c.g * (m - signal);
   }
 };
 

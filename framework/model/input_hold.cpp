@@ -1,0 +1,24 @@
+#include "framework/model/input_hold.hpp"
+
+#include "framework/core/error.hpp"
+
+namespace hystbench {
+
+std::string to_string(InputHold hold) {
+  switch (hold) {
+    case InputHold::Spline: return "spline";
+    case InputHold::Linear: return "linear";
+    case InputHold::Zoh: return "zoh";
+  }
+  return "?";
+}
+
+InputHold parse_input_hold(const std::string& text, const std::string& where) {
+  for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh})
+    if (text == to_string(hold)) return hold;
+  throw InputError(where + ": unknown input hold '" + text + "'; valid: spline, linear, zoh");
+}
+
+bool is_causal(InputHold hold) { return hold != InputHold::Spline; }
+
+}  // namespace hystbench
