@@ -18,6 +18,7 @@
 #include "framework/model/model.hpp"
 #include "framework/model/model_data.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"
+#include "tests/active_point.hpp"
 
 namespace hystbench {
 namespace {
@@ -428,17 +429,7 @@ TEST(EffectCatalog, AddingANeutralEffectKeepsTheFittedOutputExactly) {
   }
 }
 
-// A point away from neutral, inside the bounds, at which the effect acts.
-Eigen::VectorXd active_point(const Model& model, double step) {
-  Eigen::VectorXd x = model.neutral();
-  x[0] = 1.3;
-  for (int i = 1; i < model.dimension(); ++i) {
-    const auto& p = model.parameter(i);
-    const double room = p.upper > p.neutral ? p.upper - p.neutral : p.lower - p.neutral;
-    x[i] = p.neutral + step * room;
-  }
-  return x;
-}
+using test_support::active_point;
 
 TEST(EffectCatalog, PhysicalOutputDoesNotDependOnTheNormalisation) {
   // The same physical parameters simulated under two different signal

@@ -18,6 +18,7 @@
 #include "framework/model/model.hpp"
 #include "framework/model/replay_stepper.hpp"
 #include "framework/model/streaming_model.hpp"
+#include "tests/active_point.hpp"
 
 namespace hystbench {
 namespace {
@@ -48,18 +49,7 @@ std::vector<std::string> catalog() {
   return names;
 }
 
-// Gain 1.3 and every parameter a fraction `step` of the way from its neutral
-// value to a bound (the upper one when there is room): every effect acts.
-Eigen::VectorXd active_point(const Model& model, double step) {
-  Eigen::VectorXd x = model.neutral();
-  x[0] = 1.3;
-  for (int i = 1; i < model.dimension(); ++i) {
-    const auto& p = model.parameter(i);
-    const double room = p.upper > p.neutral ? p.upper - p.neutral : p.lower - p.neutral;
-    x[i] = p.neutral + step * room;
-  }
-  return x;
-}
+using test_support::active_point;
 
 bool batch(Model model, const Eigen::VectorXd& x, const ModelData& d, InputHold hold, Eigen::VectorXd& y) {
   model.set_input_hold(hold);

@@ -20,6 +20,7 @@
 
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
+#include "problems/hammerstein/effects/biquad.hpp"
 
 namespace hystbench {
 namespace {
@@ -94,8 +95,8 @@ class Arx : public Effect {
   std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
     std::array<double, 5> c;
     return stepper_for(setup(p, c), [&] {
-      return kernel_stepper<State<double>>(
-          [c](State<double>& state, double signal, double) { return sample(c, state, signal); });
+      return kernel_stepper<BiquadState<double>>([c](BiquadState<double>& state, double signal,
+                                                     double) { return biquad_step(c, state, signal); });
     });
   }
 
@@ -111,29 +112,11 @@ class Arx : public Effect {
     return EffectSetup::Run;
   }
 
-  // At rest: w[k<0] = y[k<0] = 0.
-  template <class V>
-  struct State {
-    V w1{}, w2{}, y1{}, y2{};
-  };
-
-  // One sample, shared by the batch and streaming forms.
-  template <class V>
-  static V sample(const std::array<V, 5>& c, State<V>& state, V w) {
-    const V b0 = c[0], b1 = c[1], b2 = c[2], a1 = c[3], a2 = c[4];
-    const V y = ((b0 * w + b1 * state.w1) + (b2 * state.w2 - a2 * state.y2)) - a1 * state.y1;
-    state.w2 = state.w1;
-    state.w1 = w;
-    state.y2 = state.y1;
-    state.y1 = y;
-    return y;
-  }
-
   // In place; returns the last output sample.
   template <class V>
   static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
-    State<V> state;
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, state, s[k]);
+    BiquadState<V> state;
+    for (Eigen::Index k = 0; k < n; ++k) s[k] = biquad_step(c, state, s[k]);
     return state.y1;
   }
 };

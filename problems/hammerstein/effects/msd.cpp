@@ -25,6 +25,7 @@
 
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
+#include "problems/hammerstein/effects/biquad.hpp"
 
 namespace hystbench {
 namespace {
@@ -79,8 +80,10 @@ class Msd : public Effect {
   std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
     std::array<double, 5> c;
     return stepper_for(setup(p, ctx.sample_time, c), [&] {
-      return kernel_stepper<State<double>>(
-          [c](State<double>& state, double signal, double) { return sample(c, state, signal); });
+      return kernel_stepper<BiquadState<double>>(
+          [c](BiquadState<double>& state, double signal, double) {
+            return sample(c, state, signal);
+          });
     });
   }
 
@@ -102,30 +105,19 @@ class Msd : public Effect {
     return EffectSetup::Run;
   }
 
-  // At rest: w[k<0] = 0 and (G·w)[k<0] = 0.
+  // One sample, shared by the batch and streaming forms: y = w − G·w, G·w
+  // from rest.
   template <class V>
-  struct State {
-    V w1{}, w2{}, e1{}, e2{};
-  };
-
-  // One sample, shared by the batch and streaming forms: y = w − G·w.
-  template <class V>
-  static V sample(const std::array<V, 5>& c, State<V>& state, V w) {
-    const V n0 = c[0], n1 = c[1], n2 = c[2], a1 = c[3], a2 = c[4];
-    const V e = ((n0 * w + n1 * state.w1) + (n2 * state.w2 - a2 * state.e2)) - a1 * state.e1;
-    state.w2 = state.w1;
-    state.w1 = w;
-    state.e2 = state.e1;
-    state.e1 = e;
-    return w - e;
+  static V sample(const std::array<V, 5>& c, BiquadState<V>& state, V w) {
+    return w - biquad_step(c, state, w);
   }
 
   // In place; returns the last G·w.
   template <class V>
   static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
-    State<V> state;
+    BiquadState<V> state;
     for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, state, s[k]);
-    return state.e1;
+    return state.y1;
   }
 };
 
