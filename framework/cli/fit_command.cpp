@@ -3,6 +3,7 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
+#include "framework/cli/input_hold_option.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/discovery/fit_errors.hpp"
 #include "framework/discovery/fit_record.hpp"
@@ -18,7 +19,7 @@ struct FitCommandOptions {
   FitCliOptions fit;
   OutputOptions output;
   std::string model;
-  std::string input_hold = "spline";
+  InputHold input_hold = InputHold::Spline;
 };
 
 void fit(FitCommandOptions& o) {
@@ -27,7 +28,7 @@ void fit(FitCommandOptions& o) {
   const HoldoutSpec holdout = o.data.holdout_spec();
   Model model = Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
-  model.set_input_hold(parse_input_hold(o.input_hold, "--input-hold"));
+  model.set_input_hold(o.input_hold);
   const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, model);
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
@@ -64,11 +65,7 @@ Action add_fit_command(CLI::App& app) {
   add_fit_options(cmd, o->fit);
   // fit.json records a hold other than the spline, so compare and diagnose
   // --fit simulate the model as it was fitted.
-  cmd->add_option("--input-hold", o->input_hold,
-                  "input between samples for ODE effects: spline (through the record, the most "
-                  "accurate offline), or linear or zoh (causal: the model then streams exactly as "
-                  "fitted)")
-      ->capture_default_str()->check(CLI::IsMember({"spline", "linear", "zoh"}));
+  cli::add_input_hold_option(cmd, o->input_hold, "the model then streams exactly as fitted");
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/input_hold_option.hpp"
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 struct SimulateOptions {
   std::string params, excitation, out, form = "increment", input_unit, output_unit, model;
-  std::string input_hold = "spline";
+  InputHold input_hold = InputHold::Spline;
   int substeps = 0;
   double noise = 0.01;
   std::uint64_t seed = 1;
@@ -38,7 +39,7 @@ SyntheticData make_data(const SimulateOptions& o) {
   if (!o.model.empty()) {
     Model model = Model::parse(o.model);
     model.set_substeps(o.substeps);
-    model.set_input_hold(parse_input_hold(o.input_hold, "--input-hold"));
+    model.set_input_hold(o.input_hold);
     return make_model_synthetic_data(model, values, excitation, o.noise, o.seed, o.params);
   }
   const auto params = read_hammerstein_params(values, o.params);
@@ -58,7 +59,9 @@ void simulate(const SimulateOptions& o) {
   const std::string command = "hystbench simulate" +
                               (o.model.empty() ? "" : " --model " + o.model) +
                               (o.substeps ? " --substeps " + std::to_string(o.substeps) : "") +
-                              (o.input_hold != "spline" ? " --input-hold " + o.input_hold : "") +
+                              (o.input_hold != InputHold::Spline
+                                   ? " --input-hold " + to_string(o.input_hold)
+                                   : "") +
                               " --params " + o.params + " --excitation " +
                               o.excitation + " --noise " + noise.str() +
                               " --seed " + std::to_string(o.seed) +
@@ -95,10 +98,7 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--substeps", o->substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
-  cmd->add_option("--input-hold", o->input_hold,
-                  "input between samples for ODE effects: spline (through the record), linear or "
-                  "zoh (causal, as a stream)")
-      ->capture_default_str()->check(CLI::IsMember({"spline", "linear", "zoh"}));
+  cli::add_input_hold_option(cmd, o->input_hold, "as a stream runs the model");
   cmd->add_option("--excitation", o->excitation, "JSON excitation spec (sine / sweep / steps segments)")
       ->required();
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")
