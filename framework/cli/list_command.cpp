@@ -2,20 +2,29 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/control/controller.hpp"
+#include "framework/control/plant.hpp"
 #include "framework/core/registry.hpp"
 #include "framework/model/effect.hpp"
 
 namespace hystbench::cli {
 namespace {
 
-void print_optimizers() {
-  std::cout << "Optimizers (\"algorithms\": [{\"name\": NAME, \"params\": {...}}]):\n";
-  for (const auto* info : OptimizerRegistry::instance().all()) {
+// Name, summary, parameters and citation of every entry of a plugin registry.
+template <class Registry>
+void print_plugins(const std::string& title) {
+  std::cout << title;
+  for (const auto* info : Registry::instance().all()) {
     std::cout << "\n  " << info->name << " - " << info->summary << "\n";
     for (const auto& p : info->params)
       std::cout << "      " << p.name << ": " << p.describe_range() << "\n          " << p.doc << "\n";
-    std::cout << "    Citation: " << info->citation << "\n";
+    if (!info->citation.empty()) std::cout << "    Citation: " << info->citation << "\n";
   }
+}
+
+void print_optimizers() {
+  print_plugins<OptimizerRegistry>(
+      "Optimizers (\"algorithms\": [{\"name\": NAME, \"params\": {...}}]):\n");
 }
 
 void print_problems() {
@@ -49,10 +58,11 @@ void print_effects() {
 
 Action add_list_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "list", "List optimizers (parameters, defaults, citations), problems and model effects");
+      "list", "List optimizers (parameters, defaults, citations), problems, model effects, "
+              "controllers and plants");
   auto what = std::make_shared<std::string>("all");
   cmd->add_option("what", *what, "what to list")
-      ->check(CLI::IsMember({"all", "optimizers", "problems", "effects"}))
+      ->check(CLI::IsMember({"all", "optimizers", "problems", "effects", "controllers", "plants"}))
       ->capture_default_str();
   auto load_plugins = add_plugin_option(*cmd);
   return [load_plugins, what] {
@@ -60,6 +70,13 @@ Action add_list_command(CLI::App& app) {
     if (*what == "all" || *what == "optimizers") print_optimizers();
     if (*what == "all" || *what == "problems") print_problems();
     if (*what == "all" || *what == "effects") print_effects();
+    if (*what == "all" || *what == "controllers")
+      print_plugins<ControllerRegistry>(
+          "\nControllers (hystbench control: \"controllers\": [{\"label\": .., \"name\": NAME, "
+          "\"params\": {...}}]):\n");
+    if (*what == "all" || *what == "plants")
+      print_plugins<PlantRegistry>(
+          "\nPlants (hystbench control: \"plant\": {\"type\": NAME, \"params\": {...}}):\n");
   };
 }
 

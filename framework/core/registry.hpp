@@ -18,9 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/error.hpp"
 #include "framework/core/optimizer.hpp"
 #include "framework/core/parameters.hpp"
 #include "framework/core/problem.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 
@@ -53,7 +55,13 @@ class Registry {
   }
   void add(Info info) { entries_[info.name] = std::move(info); }
   // Throws InputError naming the known entries.
-  const Info& find(const std::string& name, const std::string& what) const;
+  const Info& find(const std::string& name, const std::string& what) const {
+    auto it = entries_.find(name);
+    if (it != entries_.end()) return it->second;
+    std::vector<std::string> known;
+    for (const auto& [key, entry] : entries_) known.push_back(key);
+    throw InputError(what + ": unknown name '" + name + "'; known: " + join(known));
+  }
   std::vector<const Info*> all() const {
     std::vector<const Info*> out;
     for (const auto& [name, info] : entries_) out.push_back(&info);

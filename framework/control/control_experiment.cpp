@@ -1,0 +1,122 @@
+#include "framework/control/control_experiment.hpp"
+
+#include <fstream>
+#include <set>
+
+#include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
+
+namespace hystbench {
+namespace {
+
+double number(const nlohmann::json& j, const std::string& key, double fallback, double lo,
+              double hi, const std::string& where) {
+  if (!j.contains(key)) return fallback;
+  const auto& v = j[key];
+  if (!v.is_number() || !(v.get<double>() >= lo && v.get<double>() <= hi))
+    throw InputError(where + "." + key + ": give a number in [" + number_text(lo) + ", " +
+                     number_text(hi) + "]");
+  return v.get<double>();
+}
+
+ControllerEntry controller_entry(const nlohmann::json& c, const std::string& where) {
+  require_known_keys(c, {"label", "name", "params", "secondary"}, where);
+  if (!c.contains("name") || !c["name"].is_string())
+    throw InputError(where + ".name: give a controller name (hystbench list controllers)");
+  ControllerEntry e;
+  e.name = c["name"].get<std::string>();
+  const ControllerInfo& info = ControllerRegistry::instance().find(e.name, where + ".name");
+  e.label = c.value("label", e.name);
+  e.params = validate_params(info.params, c.value("params", nlohmann::json::object()),
+                             where + ".params");
+  e.reconstructed = info.reconstructed;
+  e.secondary = c.value("secondary", nlohmann::json());
+  e.where = where;
+  e.make();  // a plugin's own checks (e.g. mu_min <= mu_max) fail here, before any output
+  return e;
+}
+
+void read_controllers(const nlohmann::json& j, const std::string& where, ControlExperiment& x) {
+  if (!j.contains("controllers") || !j["controllers"].is_array() || j["controllers"].empty())
+    throw InputError(where + ".controllers: give a list of {\"label\", \"name\", \"params\"}");
+  std::set<std::string> labels;
+  for (std::size_t i = 0; i < j["controllers"].size(); ++i) {
+    const std::string at = where + ".controllers[" + std::to_string(i) + "]";
+    ControllerEntry e = controller_entry(j["controllers"][i], at);
+    if (!labels.insert(e.label).second)
+      throw InputError(at + ".label: '" + e.label + "' is used twice; labels must be unique");
+    x.controllers.push_back(std::move(e));
+  }
+}
+
+// "step_sweep": {"name": "fxnlms", "param": "mu", "values": [...], "params": {...}}
+void read_sweep(const nlohmann::json& s, const std::string& where, ControlExperiment& x) {
+  require_known_keys(s, {"name", "param", "values", "params"}, where);
+  x.sweep_param = s.value("param", "mu");
+  if (!s.contains("values") || !s["values"].is_array() || s["values"].empty())
+    throw InputError(where + ".values: give a list of " + x.sweep_param + " values");
+  for (std::size_t i = 0; i < s["values"].size(); ++i) {
+    nlohmann::json params = s.value("params", nlohmann::json::object());
+    params[x.sweep_param] = s["values"][i];
+    const nlohmann::json c = {{"name", s.value("name", "")}, {"params", params}};
+    ControllerEntry e = controller_entry(c, where);
+    e.in_sweep = true;
+    e.sweep_value = e.params.real(x.sweep_param);
+    e.label = x.sweep_param + " = " + number_text(e.sweep_value);
+    x.controllers.push_back(std::move(e));
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Controller> ControllerEntry::make() const {
+  return ControllerRegistry::instance().find(name, "controller").create(params);
+}
+
+ControlExperiment ControlExperiment::load(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot open the experiment file; check the path");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string() + ": not valid JSON: " + e.what());
+  }
+  ControlExperiment x = from_json(j, file.string());
+  x.base_dir = file.parent_path();
+  return x;
+}
+
+ControlExperiment ControlExperiment::from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(where + ": the experiment must be a JSON object");
+  require_known_keys(j, {"name", "description", "sample_rate_hz", "duration_s", "steady_s",
+                         "disturbance", "plant", "actuator", "noise", "secondary",
+                         "controllers", "step_sweep", "divergence_ratio", "trials", "seed"},
+                     where);
+  ControlExperiment x;
+  x.source = j;
+  x.name = j.value("name", "control");
+  x.description = j.value("description", "");
+  x.loop.sample_rate_hz = number(j, "sample_rate_hz", 1000.0, 1.0, 1e7, where);
+  x.loop.duration_s = number(j, "duration_s", 60.0, 0.01, 1e5, where);
+  x.windows = {x.loop.sample_rate_hz, number(j, "steady_s", 10.0, 0.001, x.loop.duration_s, where)};
+  const nlohmann::json d = j.value("disturbance", nlohmann::json::object());
+  require_known_keys(d, {"frequency_hz", "amplitude"}, where + ".disturbance");
+  x.loop.disturbance_hz =
+      number(d, "frequency_hz", 20.61, 1e-6, x.loop.sample_rate_hz / 2, where + ".disturbance");
+  x.loop.disturbance_amplitude = number(d, "amplitude", 3.0, 1e-12, 1e12, where + ".disturbance");
+  const nlohmann::json noise = j.value("noise", nlohmann::json::object());
+  require_known_keys(noise, {"snr_db"}, where + ".noise");
+  x.snr_db = number(noise, "snr_db", 30.0, -100.0, 400.0, where + ".noise");
+  x.divergence_ratio = number(j, "divergence_ratio", 1.5, 1.0, 1e12, where);
+  x.plant = j.value("plant", nlohmann::json{{"type", "mfc_beam"}});
+  x.actuator = j.value("actuator", nlohmann::json());
+  x.secondary = j.value("secondary", nlohmann::json{{"type", "linear_true"}});
+  x.trials = int(number(j, "trials", 5, 1, 100000, where));
+  x.seed = std::uint64_t(number(j, "seed", 1, 0, 9007199254740992.0, where));
+  read_controllers(j, where, x);
+  if (j.contains("step_sweep")) read_sweep(j["step_sweep"], where + ".step_sweep", x);
+  return x;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,64 @@
+#include "framework/control/model_stream.hpp"
+
+#include "framework/control/scaled_stream.hpp"
+#include "framework/core/error.hpp"
+#include "framework/discovery/fit_record.hpp"
+#include "framework/io/data_path.hpp"
+#include "framework/model/streaming_model.hpp"
+
+namespace hystbench {
+namespace {
+
+struct ResolvedModel {
+  Model model;
+  Eigen::VectorXd x;
+  SignalScales scales;
+  std::string description;
+};
+
+ResolvedModel from_fit(const nlohmann::json& spec, const std::filesystem::path& base_dir,
+                       const std::string& where) {
+  if (!spec["fit"].is_string()) throw InputError(where + ".fit: give the path of a fit.json");
+  const auto path = resolve_data_path(spec["fit"].get<std::string>(), base_dir, where + ".fit");
+  FitRecord record = FitRecord::read(path);
+  return {record.model, record.x, record.scales,
+          path.filename().string() + ": " + record.model.text()};
+}
+
+ResolvedModel from_effects(const nlohmann::json& spec, const std::string& where) {
+  if (!spec["model"].is_string())
+    throw InputError(where + ".model: give the effects as a string, e.g. \"hysteresis,asymmetry\"");
+  Model model = Model::parse(spec["model"].get<std::string>(), where + ".model");
+  SignalScales scales;
+  if (spec.contains("scales")) scales = SignalScales::from_json(spec["scales"], where + ".scales");
+  if (!spec.contains("parameters") || !spec["parameters"].is_object())
+    throw InputError(where + ".parameters: give the physical value of every parameter of " +
+                     model.text() + " as an object {\"gain\": .., ...}");
+  const Eigen::VectorXd x = model.from_physical(spec["parameters"], scales, where + ".parameters");
+  return {model, x, scales, model.text()};
+}
+
+}  // namespace
+
+const std::vector<std::string>& model_stream_keys() {
+  static const std::vector<std::string> keys = {"fit", "model", "parameters", "scales",
+                                                "input_hold"};
+  return keys;
+}
+
+ModelStream model_stream(const nlohmann::json& spec, const std::filesystem::path& base_dir,
+                         double sample_time, const std::string& where) {
+  if (!spec.is_object() || spec.contains("fit") == spec.contains("model"))
+    throw InputError(where + ": give either \"fit\": \"fit.json\" or \"model\" with "
+                             "\"parameters\"");
+  ResolvedModel r = spec.contains("fit") ? from_fit(spec, base_dir, where) : from_effects(spec, where);
+  const InputHold hold = parse_input_hold(spec.value("input_hold", "linear"), where + ".input_hold");
+  auto inner = std::make_unique<StreamingModel>(r.model, r.x, sample_time, hold, where);
+  if (!inner->valid())
+    throw InputError(where + ": the parameters of " + r.model.text() +
+                     " are invalid (the model cannot be simulated); check their values");
+  return {std::make_unique<ScaledStream>(std::move(inner), 1.0 / r.scales.u, r.scales.y),
+          r.description};
+}
+
+}  // namespace hystbench
