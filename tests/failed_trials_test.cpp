@@ -52,7 +52,7 @@ class ThrowingSearch : public Optimizer {
 };
 
 void register_throwing_search() {
-  static const detail::OptimizerRegistration<ThrowingSearch> registration;
+  static const detail::PluginRegistration<OptimizerInfo, ThrowingSearch, Params> registration;
 }
 
 // Sphere whose every value is NaN: every candidate "diverges".

@@ -4,21 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/control/uncontrolled.hpp"
 #include "framework/core/parallel_jobs.hpp"
 #include "framework/core/rng.hpp"
 
 namespace hystbench {
 namespace {
-
-// The reference every controller is measured against: u = 0.
-class Uncontrolled final : public Controller {
- public:
-  void reset() override {}
-  double output(double) override { return 0.0; }
-  void adapt(double, double) override {}
-  double step_size() const override { return 0.0; }
-  double weight_norm() const override { return 0.0; }
-};
 
 std::uint64_t noise_seed(const ControlExperiment& x, int trial) {
   return trial_seed(x.seed, "sensor noise", std::uint64_t(trial));

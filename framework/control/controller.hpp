@@ -52,21 +52,7 @@ struct ControllerInfo {
 
 using ControllerRegistry = Registry<ControllerInfo>;
 
-namespace detail {
-template <class T>
-struct ControllerRegistration {
-  ControllerRegistration() {
-    ControllerInfo info = T::info();
-    info.create = [](const Params& p) { return std::make_unique<T>(p); };
-    ControllerRegistry::instance().add(std::move(info));
-  }
-};
-}  // namespace detail
-
 }  // namespace hystbench
 
-#define HYSTBENCH_CONTROLLER(Class)                                                \
-  namespace {                                                                      \
-  const ::hystbench::detail::ControllerRegistration<Class> HYSTBENCH_CONCAT(       \
-      hystbench_controller_registration_, __LINE__);                               \
-  }
+#define HYSTBENCH_CONTROLLER(Class) \
+  HYSTBENCH_REGISTER_PLUGIN(::hystbench::ControllerInfo, Class, ::hystbench::Params)

@@ -50,21 +50,7 @@ struct PlantInfo {
 
 using PlantRegistry = Registry<PlantInfo>;
 
-namespace detail {
-template <class T>
-struct PlantRegistration {
-  PlantRegistration() {
-    PlantInfo info = T::info();
-    info.create = [](const Params& p, const PlantSetup& s) { return std::make_unique<T>(p, s); };
-    PlantRegistry::instance().add(std::move(info));
-  }
-};
-}  // namespace detail
-
 }  // namespace hystbench
 
-#define HYSTBENCH_PLANT(Class)                                                     \
-  namespace {                                                                      \
-  const ::hystbench::detail::PlantRegistration<Class> HYSTBENCH_CONCAT(            \
-      hystbench_plant_registration_, __LINE__);                                    \
-  }
+#define HYSTBENCH_PLANT(Class) \
+  HYSTBENCH_REGISTER_PLUGIN(::hystbench::PlantInfo, Class, ::hystbench::Params, ::hystbench::PlantSetup)

@@ -80,12 +80,15 @@ std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohman
                                           const std::string& where);
 
 namespace detail {
-template <class T>
-struct OptimizerRegistration {
-  OptimizerRegistration() {
-    OptimizerInfo info = T::info();
-    info.create = [](const Params& p) { return std::make_unique<T>(p); };
-    OptimizerRegistry::instance().add(std::move(info));
+// Adds T::info() to the registry of Info, with a factory that passes the
+// create function's arguments to T's constructor. One of these per plugin
+// kind's macro (optimizers, effects, controllers, plants).
+template <class Info, class T, class... Args>
+struct PluginRegistration {
+  PluginRegistration() {
+    Info info = T::info();
+    info.create = [](const Args&... args) { return std::make_unique<T>(args...); };
+    Registry<Info>::instance().add(std::move(info));
   }
 };
 template <class T>
@@ -99,11 +102,16 @@ struct ProblemRegistration {
 #define HYSTBENCH_CONCAT_INNER(a, b) a##b
 #define HYSTBENCH_CONCAT(a, b) HYSTBENCH_CONCAT_INNER(a, b)
 
-#define HYSTBENCH_OPTIMIZER(Class)                                                 \
+// Registers Class in the registry of Info; the remaining arguments are the
+// types its constructor takes (those of Info::create).
+#define HYSTBENCH_REGISTER_PLUGIN(Info, Class, ...)                                \
   namespace {                                                                      \
-  const ::hystbench::detail::OptimizerRegistration<Class> HYSTBENCH_CONCAT(        \
-      hystbench_optimizer_registration_, __LINE__);                                \
+  const ::hystbench::detail::PluginRegistration<Info, Class __VA_OPT__(, ) __VA_ARGS__> \
+      HYSTBENCH_CONCAT(hystbench_plugin_registration_, __LINE__);                  \
   }
+
+#define HYSTBENCH_OPTIMIZER(Class) \
+  HYSTBENCH_REGISTER_PLUGIN(::hystbench::OptimizerInfo, Class, ::hystbench::Params)
 
 #define HYSTBENCH_PROBLEM(Class)                                                   \
   namespace {                                                                      \

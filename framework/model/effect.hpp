@@ -123,21 +123,6 @@ struct EffectInfo {
 
 using EffectRegistry = Registry<EffectInfo>;
 
-namespace detail {
-template <class T>
-struct EffectRegistration {
-  EffectRegistration() {
-    EffectInfo info = T::info();
-    info.create = [] { return std::make_unique<T>(); };
-    EffectRegistry::instance().add(std::move(info));
-  }
-};
-}  // namespace detail
-
 }  // namespace hystbench
 
-#define HYSTBENCH_EFFECT(Class)                                                    \
-  namespace {                                                                      \
-  const ::hystbench::detail::EffectRegistration<Class> HYSTBENCH_CONCAT(           \
-      hystbench_effect_registration_, __LINE__);                                   \
-  }
+#define HYSTBENCH_EFFECT(Class) HYSTBENCH_REGISTER_PLUGIN(::hystbench::EffectInfo, Class)

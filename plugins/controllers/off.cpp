@@ -1,22 +1,17 @@
-// The uncontrolled baseline: u = 0 whatever the error. Every experiment
-// also runs it on its own, with the same noise, as the reference of the
-// suppression efficiency (docs/control.md#metrics).
-#include "framework/control/controller.hpp"
+// The uncontrolled baseline as a controller a user can list: u = 0. Every
+// experiment also runs it on its own, with the same noise, as the reference
+// of the suppression efficiency (docs/control.md#metrics).
+#include "framework/control/uncontrolled.hpp"
 
 namespace hystbench {
 namespace {
 
-class Off : public Controller {
+class Off : public Uncontrolled {
  public:
   static ControllerInfo info() {
     return {"off", "No control: u = 0 (the uncontrolled baseline)", "", {}};
   }
   explicit Off(const Params&) {}
-  void reset() override {}
-  double output(double) override { return 0.0; }
-  void adapt(double, double) override {}
-  double step_size() const override { return 0.0; }
-  double weight_norm() const override { return 0.0; }
 };
 
 }  // namespace

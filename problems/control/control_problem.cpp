@@ -1,0 +1,120 @@
+#include "problems/control/control_problem.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "framework/control/control_metrics.hpp"
+#include "framework/control/controller.hpp"
+#include "framework/control/uncontrolled.hpp"
+#include "framework/core/error.hpp"
+#include "framework/io/data_path.hpp"
+
+namespace hystbench {
+namespace {
+
+ControlExperiment load_experiment(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
+  if (!spec.contains("experiment") || !spec["experiment"].is_string())
+    throw InputError("problem.experiment: give the control experiment file (plant, actuator, "
+                     "disturbance, secondary path) whose loop is tuned");
+  const auto path = resolve_data_path(spec["experiment"].get<std::string>(), base_dir, "problem.experiment");
+  ControlExperiment x = ControlExperiment::load(path);
+  if (spec.contains("duration_s")) {
+    if (!spec["duration_s"].is_number() || !(spec["duration_s"].get<double>() > x.windows.steady_s))
+      throw InputError("problem.duration_s: give a number of seconds above the steady window (" +
+                       std::to_string(x.windows.steady_s) + " s)");
+    x.loop.duration_s = spec["duration_s"].get<double>();
+  }
+  return x;
+}
+
+}  // namespace
+
+ProblemInfo ControlProblem::info() {
+  return {"control",
+          "tuning of a vibration controller's constants: one closed-loop run per candidate, "
+          "fitness = steady error ratio + weight x convergence time",
+          {"type", "experiment", "controller", "params", "tune", "convergence_weight", "noise_seed",
+           "duration_s"},
+          [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
+            return std::unique_ptr<Problem>(new ControlProblem(spec, base_dir));
+          }};
+}
+
+ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir)
+    : experiment_(load_experiment(spec, base_dir)), setup_(build_control_setup(experiment_)) {
+  require_known_keys(spec, info().keys, "problem");
+  controller_ = spec.value("controller", "");
+  const ControllerInfo& info = ControllerRegistry::instance().find(controller_, "problem.controller");
+  fixed_ = spec.value("params", nlohmann::json::object());
+  if (!spec.contains("tune") || !spec["tune"].is_array() || spec["tune"].empty())
+    throw InputError("problem.tune: give the constants to tune, e.g. [{\"param\": \"mu\", "
+                     "\"lower\": 0.001, \"upper\": 0.03, \"scale\": \"log\"}]");
+  const int n = int(spec["tune"].size());
+  bounds_.lower.resize(n);
+  bounds_.upper.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const auto& t = spec["tune"][i];
+    const std::string at = "problem.tune[" + std::to_string(i) + "]";
+    require_known_keys(t, {"param", "lower", "upper", "scale"}, at);
+    Tuned tuned{t.value("param", ""), t.value("scale", "linear") == "log"};
+    const double lo = t.value("lower", 0.0), hi = t.value("upper", 0.0);
+    if (!(lo < hi) || (tuned.log && !(lo > 0.0)))
+      throw InputError(at + ": give lower < upper" + std::string(tuned.log ? ", both above 0 for scale log" : ""));
+    // Both ends must be valid values of the controller's parameter.
+    for (double v : {lo, hi}) {
+      nlohmann::json params = fixed_;
+      params[tuned.param] = v;
+      validate_params(info.params, params, at);
+    }
+    bounds_.lower[i] = tuned.log ? std::log10(lo) : lo;
+    bounds_.upper[i] = tuned.log ? std::log10(hi) : hi;
+    bounds_.names.push_back(tuned.log ? "log10(" + tuned.param + ")" : tuned.param);
+    tuned_.push_back(tuned);
+  }
+  convergence_weight_ = spec.value("convergence_weight", 1e-3);
+  noise_seed_ = spec.value("noise_seed", std::uint64_t(1));
+  Uncontrolled none;
+  uncontrolled_ = run_loop(setup_.paths, *setup_.estimates[0].stream, none, setup_.loop, noise_seed_);
+}
+
+std::string ControlProblem::name() const { return "control(" + experiment_.name + ", " + controller_ + ")"; }
+
+nlohmann::json ControlProblem::params_of(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  nlohmann::json p = fixed_;
+  for (std::size_t i = 0; i < tuned_.size(); ++i)
+    p[tuned_[i].param] = tuned_[i].log ? std::pow(10.0, x[Eigen::Index(i)]) : x[Eigen::Index(i)];
+  return p;
+}
+
+double ControlProblem::fitness(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  const ControllerInfo& info = ControllerRegistry::instance().find(controller_, "problem.controller");
+  std::unique_ptr<Controller> c;
+  try {
+    c = info.create(validate_params(info.params, params_of(x), "problem"));
+  } catch (const InputError&) {
+    return std::numeric_limits<double>::infinity();  // e.g. mu_min above mu_max
+  }
+  const LoopTrace t = run_loop(setup_.paths, *setup_.estimates[0].stream, *c, setup_.loop, noise_seed_);
+  if (t.diverged()) return std::numeric_limits<double>::infinity();
+  const SuppressionMetrics m = suppression_metrics(t.true_error, uncontrolled_.true_error, experiment_.windows);
+  const double convergence = std::isnan(m.convergence_s) ? experiment_.loop.duration_s : m.convergence_s;
+  return std::pow(10.0, -m.attenuation_db / 20.0) + convergence_weight_ * convergence;
+}
+
+void ControlProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Ref<Eigen::VectorXd> f) const {
+  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(X.col(i));
+}
+
+nlohmann::json ControlProblem::describe() const {
+  return {{"name", name()},
+          {"experiment", experiment_.name},
+          {"controller", controller_},
+          {"fixed_params", fixed_},
+          {"convergence_weight", convergence_weight_},
+          {"noise_seed", noise_seed_},
+          {"duration_s", experiment_.loop.duration_s}};
+}
+
+}  // namespace hystbench
+
+HYSTBENCH_PROBLEM(hystbench::ControlProblem)
