@@ -16,7 +16,10 @@ void BM_ControlRun(benchmark::State& state, const char* controller) {
   const hystbench::ControlSetup setup = hystbench::build_control_setup(x);
   hystbench::ControllerEntry entry;
   for (const auto& c : x.controllers)
-    if (c.name == controller) entry = c;
+    if (c.name == controller && !c.in_sweep) {
+      entry = c;
+      break;
+    }
   auto c = entry.make();
   for (auto _ : state) {
     const auto trace = hystbench::run_loop(setup.paths, *setup.estimates[0].stream, *c, setup.loop, 1);

@@ -95,7 +95,7 @@ TEST(MfcBeam, PatchOffTheBeamIsAnInputError) {
     beam({{"control_to_m", 0.9}});
     FAIL() << "expected an InputError";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("plant.control_from_m/control_to_m"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("plant.params.control_from_m/control_to_m"), std::string::npos)
         << e.what();
   }
 }

@@ -95,7 +95,7 @@ TEST(StepRules, AboulnasrByHand) {
 // rho = 0, 0, 0.25, 0.75, 4.58333; mu(0) = 1, then 0.5, 0.275, 0.2125, 0.5645833.
 TEST(StepRules, NormalisedErrorChangeByHand) {
   auto c = make("vss_fxlms", {{"lambda", 0.5}, {"window", 2}, {"alpha", 0.5}, {"gamma", 0.1},
-                              {"delta_p", 0.0}, {"mu_min", 0.01}, {"mu_max", 1.0}});
+                              {"delta_p", 1e-300}, {"mu_min", 0.01}, {"mu_max", 1.0}});
   expect_steps(steps(*c, {1, 1, 0, 0, 2}), {1.0, 0.5, 0.275, 0.2125, 0.10625 + 0.1 * 1.71875 / 0.375});
   // reset() starts the rule again.
   expect_steps(steps(*c, {1, 1}), {1.0, 0.5});

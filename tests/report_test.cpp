@@ -61,6 +61,7 @@ ReportContext sample_context() {
   ctx.trials = 10;
   ctx.seed = 7;
   ctx.noise_floor = 0.012341;
+  ctx.fitness = "SSE";
   return ctx;
 }
 
@@ -249,6 +250,20 @@ TEST(ConvergenceCsv, LongFormatWithInfinity) {
 }
 
 // ---- figures ----------------------------------------------------------------
+
+// The axis names the fitness only when the problem says what it is: a test
+// function's or a controller's fitness is not a sum of squares.
+TEST(ConvergenceFigure, AxisNamesTheProblemsFitness) {
+  TempDir dir;
+  ReportContext ctx = sample_context();
+  ctx.fitness = "";
+  const std::vector<ConvergenceCurve> curves{convergence_curve("de_1", two_trials(), 200)};
+  std::string gp = read(write_convergence_figure(dir.path(), curves, ctx));
+  EXPECT_TRUE(contains(gp, "set ylabel \"Best-so-far fitness\"\n")) << gp;
+  ctx.fitness = "error ratio";
+  gp = read(write_convergence_figure(dir.path(), curves, ctx));
+  EXPECT_TRUE(contains(gp, "set ylabel \"Best-so-far fitness (error ratio)\"")) << gp;
+}
 
 TEST(ConvergenceFigure, ScriptDrawsMedianAndBandFromFiniteRows) {
   TempDir dir;

@@ -35,7 +35,7 @@ struct ControlExperiment {
   LoopSettings loop;  // noise_sd and divergence_level are set by the setup
   MetricWindows windows;
   double snr_db = 30.0;
-  double divergence_ratio = 1.5;  // divergence level / uncontrolled steady RMS
+  double divergence_ratio = 2.0;  // divergence level / uncontrolled steady RMS
   nlohmann::json plant, actuator, secondary;  // checked by the setup
   std::vector<ControllerEntry> controllers;   // compared ones first, then the sweep
   std::string sweep_param;                    // e.g. "mu"; empty without a sweep

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "framework/control/control_metrics.hpp"
+#include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
 #include "framework/model/spectrum.hpp"
@@ -27,6 +28,10 @@ std::vector<Curve> curves(const ControlResults& r) {
   return out;
 }
 
+// Six significant digits: these files feed figures, not further computation
+// (control.json and the tables hold the numbers).
+std::string plotted(double x) { return std::isfinite(x) ? format_number("%.6g", x) : csv_number(x); }
+
 double at(const std::vector<double>& v, std::size_t n) {
   return n < v.size() ? v[n] : std::numeric_limits<double>::quiet_NaN();
 }
@@ -42,10 +47,10 @@ std::string traces_csv(const std::vector<Curve>& cs, const ControlExperiment& x,
   std::vector<std::vector<double>> rms;
   for (const auto& c : cs) rms.push_back(moving_rms(c.trace->true_error, std::lround(x.loop.sample_rate_hz)));
   for (long n = decimate - 1; n < x.loop.samples(); n += decimate) {
-    out += csv_number(double(n) / x.loop.sample_rate_hz);
+    out += plotted(double(n) / x.loop.sample_rate_hz);
     for (std::size_t i = 0; i < cs.size(); ++i) {
-      out += "," + csv_number(20.0 * std::log10(at(rms[i], n) / reference_rms));
-      out += "," + csv_number(at(cs[i].trace->step, n)) + "," + csv_number(at(cs[i].trace->weight_norm, n));
+      out += "," + plotted(20.0 * std::log10(at(rms[i], n) / reference_rms));
+      out += "," + plotted(at(cs[i].trace->step, n)) + "," + plotted(at(cs[i].trace->weight_norm, n));
     }
     out += "\n";
   }
@@ -53,10 +58,14 @@ std::string traces_csv(const std::vector<Curve>& cs, const ControlExperiment& x,
 }
 
 std::string spectrum_csv(const std::vector<Curve>& cs, const ControlExperiment& x) {
-  const long steady = std::lround(x.windows.steady_s * x.loop.sample_rate_hz);
+  const long steady = x.windows.steady_samples();
   std::vector<Spectrum> spectra;
   for (const auto& c : cs) {
-    const auto& e = c.trace->error;
+    if (c.trace->diverged()) {  // stopped early: no steady window to analyse
+      spectra.push_back({});
+      continue;
+    }
+    const auto& e = c.trace->true_error;  // beneath the sensor noise
     const long n = std::min<long>(steady, long(e.size()));
     const Eigen::VectorXd tail = Eigen::Map<const Eigen::VectorXd>(e.data() + e.size() - n, n);
     spectra.push_back(welch_spectrum(tail, 1.0 / x.loop.sample_rate_hz, 2048));
@@ -64,23 +73,26 @@ std::string spectrum_csv(const std::vector<Curve>& cs, const ControlExperiment& 
   std::string out = "frequency_hz";
   for (const auto& c : cs) out += "," + csv_field(c.title + " power_db");
   out += "\n";
+  // The uncontrolled run never stops early, so its grid is the full one.
   for (std::size_t k = 0; k < spectra[0].frequency.size(); ++k) {
-    out += csv_number(spectra[0].frequency[k]);
+    out += plotted(spectra[0].frequency[k]);
     for (const auto& s : spectra)
-      out += "," + csv_number(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN);
+      out += "," + plotted(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN);
     out += "\n";
   }
   return out;
 }
 
-// One line per curve from `file`, y in column first_column + stride * i.
+// One line per curve from `file`, y in column first_column + stride * i;
+// curve i keeps its colour in every figure (dashed after the eighth).
 std::string plot_lines(const std::vector<Curve>& cs, const std::string& file, int first_column,
                        int stride, std::size_t from = 0) {
   std::string plot = "  plot ";
   for (std::size_t i = from; i < cs.size(); ++i) {
     if (i > from) plot += ", \\\n       ";
     plot += "\"" + file + "\" using 1:" + std::to_string(first_column + stride * int(i)) +
-            " with lines lw 1.5 lt " + std::to_string(i + 1) + " title " + gnuplot::quoted(cs[i].title) + " noenhanced";
+            " with lines lw 1.5 lt " + std::to_string(i % 8 + 1) + " dt " + std::to_string(i / 8 + 1) +
+            " title " + gnuplot::quoted(cs[i].title) + " noenhanced";
   }
   return plot + "\n";
 }
@@ -98,7 +110,7 @@ fs::path script(const fs::path& dir, const std::string& name, const std::string&
 std::vector<fs::path> write_control_figures(const fs::path& dir, const ControlExperiment& x,
                                             const ControlResults& r) {
   const auto cs = curves(r);
-  const int decimate = std::max(1, int(std::lround(x.loop.sample_rate_hz / 100.0)));
+  const int decimate = std::max(1, int(std::lround(x.loop.sample_rate_hz / 50.0)));  // 50 points a second
   const double reference = steady_rms(r.uncontrolled.first_trial.true_error, x.windows);
   write_file_atomic(dir / "traces.csv", traces_csv(cs, x, decimate, reference));
   write_file_atomic(dir / "spectrum.csv", spectrum_csv(cs, x));
@@ -115,8 +127,8 @@ std::vector<fs::path> write_control_figures(const fs::path& dir, const ControlEx
       script(dir, "weight_norm", "norm of the controller weights |w(n)|", traces,
              "set xlabel \"time (s)\"\nset ylabel \"|w|\"\n", plot_lines(cs, "traces.csv", 4, 3, 1)),
       script(dir, "spectrum",
-             "Welch spectrum of the measured error over the steady window, uncontrolled and "
-             "controlled",
+             "Welch spectrum of the true (noise-free) error over the steady window, "
+             "uncontrolled and controlled",
              "spectrum.csv", "set xlabel \"frequency (Hz)\"\nset ylabel \"power (dB)\"\nset xrange [0:" +
                                  gnuplot::number(std::min(x.loop.sample_rate_hz / 2, 8 * x.loop.disturbance_hz)) + "]\n",
              plot_lines(cs, "spectrum.csv", 2, 1)),

@@ -6,8 +6,9 @@
 //   residual_error  1 s moving RMS of the true error, dB re the uncontrolled level
 //   step_size       the step size mu(n)
 //   weight_norm     |w(n)|
-//   spectrum        Welch spectrum of the measured error over the steady
-//                   window, uncontrolled and controlled
+//   spectrum        Welch spectrum of the true (noise-free) error over the
+//                   steady window, uncontrolled and controlled: what the
+//                   controller left beneath the sensor noise
 //
 // The data go to traces.csv (every `decimate`-th sample) and spectrum.csv.
 #include <filesystem>

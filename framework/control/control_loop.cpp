@@ -31,6 +31,16 @@ class DivergenceWatch {
   long n_ = 0;
 };
 
+// Start of the final stretch in which the 1 s moving RMS stays above
+// `level`, when the run ends inside one; NaN otherwise.
+double unsettled_since(const std::vector<double>& true_error, double level, double fs) {
+  const auto rms = moving_rms(true_error, std::lround(fs));
+  if (level <= 0.0 || rms.empty() || !(rms.back() > level)) return std::nan("");
+  std::size_t n = rms.size() - 1;
+  while (n > 0 && rms[n - 1] > level) --n;
+  return double(n) / fs;
+}
+
 }  // namespace
 
 long LoopSettings::samples() const { return std::lround(duration_s * sample_rate_hz); }
@@ -50,7 +60,7 @@ LoopTrace run_loop(const LoopPaths& paths, const SignalStream& estimate_path,
   const long n_samples = s.samples();
   const double w = 2.0 * M_PI * s.disturbance_hz / s.sample_rate_hz;
   DivergenceWatch watch(s.divergence_level, std::lround(s.sample_rate_hz));
-  LoopTrace t{{}, {}, {}, {}, {}, std::numeric_limits<double>::quiet_NaN()};
+  LoopTrace t;
   for (auto* v : {&t.error, &t.true_error, &t.control, &t.step, &t.weight_norm})
     v->reserve(n_samples);
   for (long n = 0; n < n_samples; ++n) {
@@ -67,9 +77,11 @@ LoopTrace run_loop(const LoopPaths& paths, const SignalStream& estimate_path,
     t.weight_norm.push_back(controller.weight_norm());
     if (watch.diverged(e_true, u) || !std::isfinite(t.weight_norm.back())) {
       t.diverged_at_s = double(n) / s.sample_rate_hz;
-      break;
+      return t;
     }
   }
+  t.diverged_at_s = unsettled_since(t.true_error, LoopSettings::kUnsettledRatio * s.uncontrolled_level,
+                                    s.sample_rate_hz);
   return t;
 }
 

@@ -11,6 +11,7 @@
 // with d_v(n) = a sin(2 pi f0 n / fs) into the disturbance actuator. The
 // paths are copies: a run never changes the streams it was given.
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -31,9 +32,13 @@ struct LoopSettings {
   double disturbance_amplitude = 3.0;
   double reference_amplitude = 1.0;
   double noise_sd = 0.0;  // sensor noise
-  // A run has diverged once the 1 s moving RMS of the true error exceeds this
-  // level, or anything becomes non-finite (0: never checked).
+  // A run has diverged once the 1 s moving RMS of the true error exceeds
+  // divergence_level, or anything becomes non-finite; and also when it ends
+  // above kUnsettledRatio times the uncontrolled level (an unstable loop
+  // that the output limit holds in a limit cycle). 0: never checked.
   double divergence_level = 0.0;
+  double uncontrolled_level = 0.0;
+  static constexpr double kUnsettledRatio = 1.25;  // +1.9 dB
 
   long samples() const;
 };
@@ -44,9 +49,10 @@ struct LoopTrace {
   std::vector<double> control;     // u(n)
   std::vector<double> step;        // step size used at n
   std::vector<double> weight_norm;
-  // Time (s) at which the run was found diverged, and stopped; NaN if never.
-  // The traces then end there.
-  double diverged_at_s;
+  // Time (s) at which the run was found diverged, NaN if never: where it
+  // was stopped (the traces end there), or where its final stretch above the
+  // uncontrolled level began.
+  double diverged_at_s = std::numeric_limits<double>::quiet_NaN();
   bool diverged() const;
 };
 

@@ -8,8 +8,10 @@
 
 namespace hystbench {
 
+long MetricWindows::steady_samples() const { return std::lround(steady_s * sample_rate_hz); }
+
 double steady_rms(const std::vector<double>& x, const MetricWindows& w) {
-  const std::size_t n = std::min(x.size(), std::size_t(std::lround(w.steady_s * w.sample_rate_hz)));
+  const std::size_t n = std::min(x.size(), std::size_t(w.steady_samples()));
   double sum = 0.0;
   for (std::size_t i = x.size() - n; i < x.size(); ++i) sum += x[i] * x[i];
   return n ? std::sqrt(sum / double(n)) : 0.0;

@@ -23,9 +23,23 @@ struct SuppressionMetrics {
   double convergence_s = 0.0;
 };
 
+// The metrics by name, in the order of control.json and the CSV tables.
+struct MetricField {
+  const char* name;
+  double SuppressionMetrics::*field;
+};
+inline constexpr MetricField kSuppressionMetrics[] = {
+    {"rmse", &SuppressionMetrics::rmse},
+    {"mae", &SuppressionMetrics::mae},
+    {"efficiency_percent", &SuppressionMetrics::efficiency_percent},
+    {"attenuation_db", &SuppressionMetrics::attenuation_db},
+    {"convergence_s", &SuppressionMetrics::convergence_s},
+};
+
 struct MetricWindows {
   double sample_rate_hz = 1000.0;
   double steady_s = 10.0;
+  long steady_samples() const;
 };
 
 // RMS of the last `steady_s` of a run.

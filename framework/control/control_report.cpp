@@ -7,15 +7,10 @@ namespace hystbench {
 namespace {
 
 nlohmann::json metrics_json(const MetricSummary& s) {
-  auto stat = [&](double SuppressionMetrics::*f) {
-    return nlohmann::json{{"mean", number_or_null(s.mean.*f)}, {"std", number_or_null(s.sd.*f)}};
-  };
-  return {{"rmse", stat(&SuppressionMetrics::rmse)},
-          {"mae", stat(&SuppressionMetrics::mae)},
-          {"efficiency_percent", stat(&SuppressionMetrics::efficiency_percent)},
-          {"attenuation_db", stat(&SuppressionMetrics::attenuation_db)},
-          {"convergence_s", stat(&SuppressionMetrics::convergence_s)},
-          {"never_converged_trials", s.never_converged}};
+  nlohmann::json j = {{"never_converged_trials", s.never_converged}};
+  for (const auto& [name, f] : kSuppressionMetrics)
+    j[name] = {{"mean", number_or_null(s.mean.*f)}, {"std", number_or_null(s.sd.*f)}};
+  return j;
 }
 
 nlohmann::json controller_json(const ControllerResult& r) {

@@ -16,11 +16,8 @@ std::uint64_t noise_seed(const ControlExperiment& x, int trial) {
 }
 
 MetricSummary summarise(const std::vector<TrialOutcome>& trials, bool truth) {
-  using Field = double SuppressionMetrics::*;
-  const Field fields[] = {&SuppressionMetrics::rmse, &SuppressionMetrics::mae, &SuppressionMetrics::efficiency_percent,
-                          &SuppressionMetrics::attenuation_db, &SuppressionMetrics::convergence_s};
   MetricSummary s;
-  for (Field f : fields) {
+  for (const auto& [name, f] : kSuppressionMetrics) {
     double sum = 0.0, sum_sq = 0.0;
     int n = 0;
     for (const auto& t : trials) {
@@ -76,8 +73,7 @@ ControlResults run_control(const ControlExperiment& x, const ControlSetup& setup
 
   std::vector<LoopTrace> off(trials);
   parallel_jobs(std::size_t(trials), [&](std::size_t t) {
-    Uncontrolled none;
-    off[t] = run_loop(setup.paths, *setup.estimates[0].stream, none, setup.loop, noise_seed(x, int(t)));
+    off[t] = run_uncontrolled(setup.paths, setup.loop, noise_seed(x, int(t)));
     tick();
   });
 

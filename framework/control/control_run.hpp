@@ -4,6 +4,7 @@
 // shared by every controller and by the uncontrolled run it is compared with,
 // so the numbers depend on neither the thread count nor the order of runs.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,7 @@ struct ControllerResult {
   std::vector<TrialOutcome> trials;
   LoopTrace first_trial;  // trial 0, for the figures
   int diverged_trials = 0;
-  double earliest_divergence_s;  // NaN when no trial diverged
+  double earliest_divergence_s = std::numeric_limits<double>::quiet_NaN();  // when none diverged
   MetricSummary measured, truth;  // over the trials that did not diverge
   bool all_diverged() const { return diverged_trials == int(trials.size()); }
 };

@@ -4,6 +4,7 @@
 
 #include "framework/control/actuator_model.hpp"
 #include "framework/control/scaled_stream.hpp"
+#include "framework/control/uncontrolled.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/rng.hpp"
 
@@ -31,17 +32,17 @@ void add_actuator(const ControlExperiment& x, ControlSetup& s) {
   s.paths.control = std::make_unique<SeriesStream>(std::move(a.stream), std::move(s.paths.control));
 }
 
+// The steady RMS of the noise-free uncontrolled error (the control path at
+// u = 0 included: an actuator model may answer a zero input).
 double uncontrolled_rms(const ControlSetup& s, const ControlExperiment& x) {
-  auto d = s.paths.disturbance->clone();
-  d->reset();
-  const long n = x.loop.samples(), steady = std::lround(x.windows.steady_s * x.loop.sample_rate_hz);
-  const double w = 2.0 * M_PI * x.loop.disturbance_hz / x.loop.sample_rate_hz;
-  double sum = 0.0;
-  for (long k = 0; k < n; ++k) {
-    const double e = d->step(x.loop.disturbance_amplitude * std::sin(w * double(k)));
-    if (k >= n - steady) sum += e * e;
-  }
-  return std::sqrt(sum / double(std::min(n, steady)));
+  LoopSettings quiet = s.loop;
+  quiet.noise_sd = 0.0;
+  const LoopTrace t = run_uncontrolled(s.paths, quiet, 0);
+  const double rms = steady_rms(t.true_error, x.windows);
+  if (!(rms > 0.0) || !std::isfinite(rms))
+    throw InputError("disturbance: the uncontrolled error has RMS " + std::to_string(rms) +
+                     " over the steady window; the plant must respond to the disturbance");
+  return rms;
 }
 
 // The experiment's estimate first, then each distinct one a controller names.
@@ -75,6 +76,7 @@ ControlSetup build_control_setup(const ControlExperiment& x) {
   s.uncontrolled_rms = uncontrolled_rms(s, x);
   s.loop.noise_sd = s.uncontrolled_rms * std::pow(10.0, -x.snr_db / 20.0);
   s.loop.divergence_level = x.divergence_ratio * s.uncontrolled_rms;
+  s.loop.uncontrolled_level = s.uncontrolled_rms;
   add_estimates(x, s);
   return s;
 }

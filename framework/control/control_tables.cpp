@@ -12,12 +12,11 @@ namespace hystbench {
 namespace {
 
 using table::Format;
-using Field = double SuppressionMetrics::*;
 
 struct Column {
   const char* markdown;
   const char* latex;
-  Field field;
+  double SuppressionMetrics::*field;
   bool truth;
 };
 
@@ -38,12 +37,14 @@ std::string metric_cell(const ControllerResult& r, const Column& c, const Contro
                         Format f) {
   if (r.all_diverged()) return "diverged at " + time_text(r.earliest_divergence_s);
   const MetricSummary& s = c.truth ? r.truth : r.measured;
+  const bool convergence = c.field == &SuppressionMetrics::convergence_s;
   const double mean = s.mean.*c.field;
-  if (std::isnan(mean)) return "> " + time_text(x.loop.duration_s);  // never converged
+  if (std::isnan(mean)) return convergence ? "> " + time_text(x.loop.duration_s) : "–";
   std::string cell = table::format_fitness(mean, f);
-  if (x.trials - r.diverged_trials > 1)
+  const int averaged = int(r.trials.size()) - r.diverged_trials - (convergence ? s.never_converged : 0);
+  if (averaged > 1)
     cell += (f == Format::Latex ? " $\\pm$ " : " ± ") + table::format_fitness(s.sd.*c.field, f);
-  if (c.field == &SuppressionMetrics::convergence_s && s.never_converged > 0)
+  if (convergence && s.never_converged > 0)
     cell += " (" + std::to_string(s.never_converged) + " never)";
   return cell;
 }
@@ -107,16 +108,15 @@ table::CellTable make_table(const ControlExperiment& x, const ControlResults& re
 std::string csv(const ControlResults& res, bool sweep) {
   std::string out = "label,controller";
   for (const char* kind : {"measured", "true"})
-    for (const char* m : {"rmse", "mae", "efficiency_percent", "attenuation_db", "convergence_s"})
-      for (const char* stat : {"mean", "sd"}) out += std::string(",") + kind + "_" + m + "_" + stat;
+    for (const auto& m : kSuppressionMetrics)
+      for (const char* stat : {"mean", "sd"}) out += std::string(",") + kind + "_" + m.name + "_" + stat;
   out += ",estimate_phase_error_deg,diverged_trials,trials,earliest_divergence_s\n";
   for (const ControllerResult* row : rows(res, sweep)) {
     const ControllerResult& r = *row;
     out += csv_field(r.entry.label) + "," + csv_field(r.entry.name);
     for (const MetricSummary* s : {&r.measured, &r.truth})
-      for (Field f : {&SuppressionMetrics::rmse, &SuppressionMetrics::mae, &SuppressionMetrics::efficiency_percent,
-                      &SuppressionMetrics::attenuation_db, &SuppressionMetrics::convergence_s})
-        out += "," + csv_number(s->mean.*f) + "," + csv_number(s->sd.*f);
+      for (const auto& m : kSuppressionMetrics)
+        out += "," + csv_number(s->mean.*m.field) + "," + csv_number(s->sd.*m.field);
     out += "," + (r.estimate ? csv_number(r.estimate->error.phase_deg) : "");
     out += "," + std::to_string(r.diverged_trials) + "," + std::to_string(r.trials.size()) + "," +
            csv_number(r.earliest_divergence_s) + "\n";

@@ -7,6 +7,7 @@
 // describing-function gain at that amplitude.
 #include <complex>
 
+#include "framework/control/control_loop.hpp"
 #include "framework/model/signal_stream.hpp"
 
 namespace hystbench {
@@ -18,6 +19,9 @@ struct HarmonicProbe {
   double settle_s = 60.0;  // lightly damped paths ring for seconds
   double window_s = 10.0;
 };
+
+// The probe at a loop's disturbance frequency and sampling rate.
+HarmonicProbe probe_at(const LoopSettings& loop, double amplitude);
 
 // Output first harmonic relative to the input sine: magnitude and phase
 // (radians, negative for a lag). Resets the stream before and after.

@@ -24,27 +24,11 @@ FxlmsOptions fxlms_options(const Params& p) {
 
 double clip_step(double mu, double lower, double upper) { return std::clamp(mu, lower, upper); }
 
-void FxlmsController::History::reset(int taps) {
-  data = Eigen::VectorXd::Zero(2 * taps);
-  head = 0;
-}
-
-void FxlmsController::History::push(double v) {
-  const int taps = static_cast<int>(data.size() / 2);
-  head = (head == 0 ? taps : head) - 1;
-  data[head] = v;
-  data[head + taps] = v;
-}
-
-Eigen::Map<const Eigen::VectorXd> FxlmsController::History::recent() const {
-  return {data.data() + head, data.size() / 2};
-}
-
-FxlmsController::FxlmsController(const FxlmsOptions& options) : options_(options) {
-  w_ = Eigen::VectorXd::Zero(options_.taps);
-  reference_.reset(options_.taps);
-  filtered_.reset(options_.taps);
-}
+FxlmsController::FxlmsController(const FxlmsOptions& options)
+    : options_(options),
+      w_(Eigen::VectorXd::Zero(options.taps)),
+      reference_(options.taps),
+      filtered_(options.taps) {}
 
 void FxlmsController::reset() {
   w_.setZero();

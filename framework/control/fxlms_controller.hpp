@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "framework/control/controller.hpp"
+#include "framework/control/tapped_delay_line.hpp"
 #include "framework/core/error.hpp"
 
 namespace hystbench {
@@ -49,19 +50,9 @@ class FxlmsController : public Controller {
   virtual void reset_step() = 0;
 
  private:
-  // Shifts `v` into a history kept twice over (positions i and i + taps), so
-  // the newest `taps` samples are always one contiguous block.
-  struct History {
-    Eigen::VectorXd data;
-    int head = 0;
-    void reset(int taps);
-    void push(double v);
-    Eigen::Map<const Eigen::VectorXd> recent() const;
-  };
-
   FxlmsOptions options_;
   Eigen::VectorXd w_;
-  History reference_, filtered_;
+  TappedDelayLine reference_, filtered_;
   double step_ = 0.0;
 };
 

@@ -2,6 +2,7 @@
 
 #include "framework/control/scaled_stream.hpp"
 #include "framework/core/error.hpp"
+#include "framework/core/parameters.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/model/streaming_model.hpp"
@@ -21,8 +22,9 @@ ResolvedModel from_fit(const nlohmann::json& spec, const std::filesystem::path& 
   if (!spec["fit"].is_string()) throw InputError(where + ".fit: give the path of a fit.json");
   const auto path = resolve_data_path(spec["fit"].get<std::string>(), base_dir, where + ".fit");
   FitRecord record = FitRecord::read(path);
-  return {record.model, record.x, record.scales,
-          path.filename().string() + ": " + record.model.text()};
+  // "seed_chain/fit.json": fit files are told apart by their folder.
+  const auto name = path.parent_path().filename() / path.filename();
+  return {record.model, record.x, record.scales, name.string() + ": " + record.model.text()};
 }
 
 ResolvedModel from_effects(const nlohmann::json& spec, const std::string& where) {
@@ -52,7 +54,8 @@ ModelStream model_stream(const nlohmann::json& spec, const std::filesystem::path
     throw InputError(where + ": give either \"fit\": \"fit.json\" or \"model\" with "
                              "\"parameters\"");
   ResolvedModel r = spec.contains("fit") ? from_fit(spec, base_dir, where) : from_effects(spec, where);
-  const InputHold hold = parse_input_hold(spec.value("input_hold", "linear"), where + ".input_hold");
+  const InputHold hold =
+      parse_input_hold(optional_text(spec, "input_hold", "linear", where), where + ".input_hold");
   auto inner = std::make_unique<StreamingModel>(r.model, r.x, sample_time, hold, where);
   if (!inner->valid())
     throw InputError(where + ": the parameters of " + r.model.text() +

@@ -6,6 +6,7 @@
 #include "framework/control/actuator_model.hpp"
 #include "framework/control/first_harmonic.hpp"
 #include "framework/control/scaled_stream.hpp"
+#include "framework/control/tapped_delay_line.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
 #include "framework/core/rng.hpp"
@@ -16,19 +17,19 @@ namespace {
 // A finite impulse response as a stream: y(n) = sum_k h_k u(n - k).
 class FirStream final : public SignalStream {
  public:
-  explicit FirStream(Eigen::VectorXd h) : h_(std::move(h)), past_(Eigen::VectorXd::Zero(h_.size())) {}
-  void reset() override { past_.setZero(); }
+  explicit FirStream(Eigen::VectorXd h) : h_(std::move(h)), past_(int(h_.size())) {}
+  void reset() override { past_.reset(int(h_.size())); }
   double step(double u) override {
-    for (Eigen::Index k = past_.size() - 1; k > 0; --k) past_[k] = past_[k - 1];
-    past_[0] = u;
-    return h_.dot(past_);
+    past_.push(u);
+    return h_.dot(past_.recent());
   }
   std::unique_ptr<SignalStream> clone() const override {
     return std::make_unique<FirStream>(*this);
   }
 
  private:
-  Eigen::VectorXd h_, past_;
+  Eigen::VectorXd h_;
+  TappedDelayLine past_;
 };
 
 // Normalised LMS on white noise through the true path (Kuo & Morgan's
@@ -41,18 +42,19 @@ SecondaryPath fir_lms(const nlohmann::json& spec, const EstimateContext& c, cons
        ParamSpec::real("step", 0.1, 1e-9, 2.0, "normalised LMS step")},
       spec, where);
   const int taps = p.integer("taps");
-  Eigen::VectorXd h = Eigen::VectorXd::Zero(taps), past = Eigen::VectorXd::Zero(taps);
+  Eigen::VectorXd h = Eigen::VectorXd::Zero(taps);
+  TappedDelayLine past(taps);
   auto path = c.true_path.clone();
   path->reset();
   Rng rng(c.identification_seed);
   const long n = std::lround(p.real("seconds") * c.loop.sample_rate_hz);
   for (long k = 0; k < n; ++k) {
     const double u = p.real("excitation") * rng.normal();
-    for (int i = taps - 1; i > 0; --i) past[i] = past[i - 1];
-    past[0] = u;
+    past.push(u);
+    const auto x = past.recent();
     const double y = path->step(u) + c.loop.noise_sd * rng.normal();
-    const double err = y - h.dot(past);
-    h += (p.real("step") * err / (1e-12 + past.squaredNorm())) * past;
+    const double err = y - h.dot(x);
+    h += (p.real("step") * err / (1e-12 + x.squaredNorm())) * x;
   }
   return {std::make_unique<FirStream>(h),
           "FIR, " + std::to_string(taps) + " taps, identified by NLMS from white noise", {}};
@@ -61,7 +63,7 @@ SecondaryPath fir_lms(const nlohmann::json& spec, const EstimateContext& c, cons
 SecondaryPath identified_model(const nlohmann::json& spec, const EstimateContext& c,
                                const std::string& where) {
   nlohmann::json model = spec;
-  const bool then_plant = spec.value("then_plant", false);
+  const bool then_plant = optional_flag(spec, "then_plant", false, where);
   model.erase("then_plant");
   ActuatorModel a = actuator_model(model, c.loop, c.base_dir, where);
   if (!then_plant) return {std::move(a.stream), "identified model " + a.description, {}};
@@ -80,8 +82,6 @@ SecondaryPath build(const nlohmann::json& spec, const EstimateContext& c, const 
     return {c.plant.control_path(), "the plant's exact linear control path", {}};
   }
   if (type == "model") {
-    if (rest.contains("then_plant") && !rest["then_plant"].is_boolean())
-      throw InputError(where + ".then_plant: give true or false");
     auto keys = actuator_model_keys();
     keys.push_back("then_plant");
     require_known_keys(rest, keys, where);
@@ -97,10 +97,7 @@ SecondaryPath build(const nlohmann::json& spec, const EstimateContext& c, const 
 SecondaryPath secondary_path(const nlohmann::json& spec, const EstimateContext& c,
                              const std::string& where) {
   SecondaryPath s = build(spec, c, where);
-  HarmonicProbe probe;
-  probe.hz = c.loop.disturbance_hz;
-  probe.amplitude = c.loop.reference_amplitude;
-  probe.sample_rate_hz = c.loop.sample_rate_hz;
+  const HarmonicProbe probe = probe_at(c.loop, c.loop.reference_amplitude);
   auto truth = c.true_path.clone();
   const auto ratio = first_harmonic(*s.stream, probe) / first_harmonic(*truth, probe);
   s.error = {std::arg(ratio) * 180.0 / M_PI, std::abs(ratio)};

@@ -127,4 +127,28 @@ Params validate_params(const std::vector<ParamSpec>& specs, const nlohmann::json
   return Params(std::move(values));
 }
 
+std::string optional_text(const nlohmann::json& object, const std::string& key,
+                          const std::string& fallback, const std::string& where) {
+  if (!object.contains(key)) return fallback;
+  if (!object[key].is_string()) throw InputError(where + "." + key + ": give a string");
+  return object[key].get<std::string>();
+}
+
+double optional_number(const nlohmann::json& object, const std::string& key, double fallback,
+                       double lo, double hi, const std::string& where) {
+  if (!object.contains(key)) return fallback;
+  const auto& v = object[key];
+  if (!v.is_number() || !(v.get<double>() >= lo && v.get<double>() <= hi))
+    throw InputError(where + "." + key + ": give a number in [" + number_text(lo) + ", " +
+                     number_text(hi) + "]");
+  return v.get<double>();
+}
+
+bool optional_flag(const nlohmann::json& object, const std::string& key, bool fallback,
+                   const std::string& where) {
+  if (!object.contains(key)) return fallback;
+  if (!object[key].is_boolean()) throw InputError(where + "." + key + ": give true or false");
+  return object[key].get<bool>();
+}
+
 }  // namespace hystbench

@@ -56,6 +56,15 @@ class Params {
 Params validate_params(const std::vector<ParamSpec>& specs,
                        const nlohmann::json& given, const std::string& where);
 
+// Optional keys of an input object with a fallback; InputError naming
+// "where.key" and what is valid when the value has the wrong type or range.
+std::string optional_text(const nlohmann::json& object, const std::string& key,
+                          const std::string& fallback, const std::string& where);
+double optional_number(const nlohmann::json& object, const std::string& key, double fallback,
+                       double lo, double hi, const std::string& where);
+bool optional_flag(const nlohmann::json& object, const std::string& key, bool fallback,
+                   const std::string& where);
+
 // Throws InputError if `object` has a key not in `allowed`, listing them.
 void require_known_keys(const nlohmann::json& object,
                         const std::vector<std::string>& allowed,

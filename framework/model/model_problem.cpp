@@ -57,6 +57,7 @@ void ModelProblem::evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Ei
 
 nlohmann::json ModelProblem::describe() const {
   return {{"name", name()},
+          {"fitness", "SSE"},
           {"samples", data_.size()},
           {"estimation_samples", data_.estimation_count()},
           {"parameters", bounds_.names}};

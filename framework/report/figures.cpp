@@ -178,7 +178,8 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
       "median and interquartile range over " + std::to_string(ctx.trials) + " trials";
   std::string s = "set title " + gp_string(title) + ".\"\\n\"." + gp_string(subtitle) +
                   " noenhanced\n"
-                  "set xlabel \"Function evaluations\"\nset ylabel \"Best-so-far fitness (SSE)\"\n"
+                  "set xlabel \"Function evaluations\"\nset ylabel " +
+                  gp_string(ctx.fitness_axis("Best-so-far fitness")) + "\n"
                   "set logscale xy\nset format x \"10^{%L}\"\n"
                   "# The axis ends at the last evaluation rather than the next decade.\n"
                   "set xrange [1:*]\nset autoscale xfixmax\n";

@@ -15,6 +15,11 @@ struct ReportContext {
   std::optional<double> noise_floor;  // SSE of the true parameters, when known
   std::string input_unit;          // of u, e.g. "V"; empty when unknown
   std::string output_unit;         // of y, e.g. "µm"
+  std::string fitness;             // what the fitness is, e.g. "SSE"; empty when unnamed
+  // "Best-so-far fitness (SSE)", or without the parentheses when unnamed.
+  std::string fitness_axis(const std::string& what) const {
+    return what + (fitness.empty() ? "" : " (" + fitness + ")");
+  }
 };
 
 }  // namespace hystbench

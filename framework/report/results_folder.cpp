@@ -32,7 +32,8 @@ long trials_per_algorithm(const std::vector<std::vector<TrialResult>>& results) 
 ReportContext report_context(const Experiment& e, const Problem& problem,
                              const std::vector<std::vector<TrialResult>>& results) {
   ReportContext ctx{e.name,  problem.name(),          describe_budget(e.budget),
-                    trials_per_algorithm(results), e.seed, noise_floor_of(problem), "", ""};
+                    trials_per_algorithm(results), e.seed, noise_floor_of(problem), "", "",
+                    problem.describe().value("fitness", "")};
   if (const auto* model = dynamic_cast<const SignalModelProblem*>(&problem)) {
     ctx.input_unit = model->input_unit();
     ctx.output_unit = model->output_unit();

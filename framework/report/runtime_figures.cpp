@@ -121,7 +121,8 @@ std::string boxplot_settings(const Experiment& e, const ReportContext& ctx, bool
                   ".\"\\n\"." +
                   gnuplot::quoted("box: quartiles, whiskers: 1.5 IQR, over " +
                                   std::to_string(ctx.trials) + " trials") +
-                  " noenhanced\nset ylabel \"Final best fitness (SSE)\"\n"
+                  " noenhanced\nset ylabel " + gnuplot::quoted(ctx.fitness_axis("Final best fitness")) +
+                  "\n"
                   "set xtics (" + tics + ") noenhanced" +
                   (labels_crowd(e) ? " rotate by 45 right" : "") + "\nset xrange [0.4:" +
                   std::to_string(e.algorithms.size()) + ".6]\n"

@@ -33,7 +33,7 @@ class VssFxlms : public VariableStepFxlms {
                                     "memory of the smoothed error level (0.999: 1 s at 1 kHz)"));
     specs.push_back(ParamSpec::integer("window", 500, 1, 1000000,
                                        "M: samples between the two levels compared"));
-    specs.push_back(ParamSpec::real("delta_p", 1e-12, 0.0, 1e6, "regularisation of rho"));
+    specs.push_back(ParamSpec::real("delta_p", 1e-12, 1e-300, 1e6, "regularisation of rho (> 0)"));
     specs.push_back(ParamSpec::choice("level", "power", {"power", "envelope"},
                                       "smooth e(n)^2 (power) or |e(n)| (amplitude envelope)"));
     ControllerInfo info{

@@ -88,6 +88,10 @@ class MfcBeam : public Plant {
     control_gain_ = 1.0 / std::abs(control_response(setup.disturbance_hz));
     disturbance_gain_ =
         1.0 / (setup.disturbance_amplitude * std::abs(disturbance_response(setup.disturbance_hz)));
+    if (!std::isfinite(control_gain_) || !std::isfinite(disturbance_gain_))
+      throw InputError("plant.params: the sensor (sensor_at) or a patch sits where the beam does not "
+                       "respond at " + std::to_string(setup.disturbance_hz) +
+                       " Hz; move it (e.g. sensor_at 0.9)");
     for (Mode& m : control_) m.input *= control_gain_;
     for (Mode& m : disturbance_) m.input *= disturbance_gain_;
   }
@@ -127,7 +131,7 @@ class MfcBeam : public Plant {
   static void check_patch(const Params& p, const std::string& which, double length) {
     const double from = p.real(which + "_from_m"), to = p.real(which + "_to_m");
     if (!(from < to) || to > length)
-      throw InputError("plant." + which + "_from_m/" + which + "_to_m: the patch [" +
+      throw InputError("plant.params." + which + "_from_m/" + which + "_to_m: the patch [" +
                        std::to_string(from) + ", " + std::to_string(to) +
                        "] m must be an interval on the beam, whose length is " +
                        std::to_string(length) + " m");

@@ -1,5 +1,6 @@
 #include "problems/control/control_problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -12,14 +13,21 @@
 namespace hystbench {
 namespace {
 
+const std::vector<std::string>& problem_keys() {
+  static const std::vector<std::string> keys = {"type", "experiment", "controller", "params", "tune",
+                                                "convergence_weight", "noise_seed", "duration_s"};
+  return keys;
+}
+
 ControlExperiment load_experiment(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
+  require_known_keys(spec, problem_keys(), "problem");  // before the experiment is built
   if (!spec.contains("experiment") || !spec["experiment"].is_string())
     throw InputError("problem.experiment: give the control experiment file (plant, actuator, "
                      "disturbance, secondary path) whose loop is tuned");
   const auto path = resolve_data_path(spec["experiment"].get<std::string>(), base_dir, "problem.experiment");
   ControlExperiment x = ControlExperiment::load(path);
   if (spec.contains("duration_s")) {
-    if (!spec["duration_s"].is_number() || !(spec["duration_s"].get<double>() > x.windows.steady_s))
+    if (!spec["duration_s"].is_number() || !(spec["duration_s"].get<double>() >= x.windows.steady_s))
       throw InputError("problem.duration_s: give a number of seconds above the steady window (" +
                        std::to_string(x.windows.steady_s) + " s)");
     x.loop.duration_s = spec["duration_s"].get<double>();
@@ -33,8 +41,7 @@ ProblemInfo ControlProblem::info() {
   return {"control",
           "tuning of a vibration controller's constants: one closed-loop run per candidate, "
           "fitness = steady error ratio + weight x convergence time",
-          {"type", "experiment", "controller", "params", "tune", "convergence_weight", "noise_seed",
-           "duration_s"},
+          problem_keys(),
           [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
             return std::unique_ptr<Problem>(new ControlProblem(spec, base_dir));
           }};
@@ -42,10 +49,10 @@ ProblemInfo ControlProblem::info() {
 
 ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir)
     : experiment_(load_experiment(spec, base_dir)), setup_(build_control_setup(experiment_)) {
-  require_known_keys(spec, info().keys, "problem");
-  controller_ = spec.value("controller", "");
+  controller_ = optional_text(spec, "controller", "", "problem");
   const ControllerInfo& info = ControllerRegistry::instance().find(controller_, "problem.controller");
   fixed_ = spec.value("params", nlohmann::json::object());
+  if (!fixed_.is_object()) throw InputError("problem.params: give the fixed constants as an object");
   if (!spec.contains("tune") || !spec["tune"].is_array() || spec["tune"].empty())
     throw InputError("problem.tune: give the constants to tune, e.g. [{\"param\": \"mu\", "
                      "\"lower\": 0.001, \"upper\": 0.03, \"scale\": \"log\"}]");
@@ -56,8 +63,16 @@ ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem
     const auto& t = spec["tune"][i];
     const std::string at = "problem.tune[" + std::to_string(i) + "]";
     require_known_keys(t, {"param", "lower", "upper", "scale"}, at);
-    Tuned tuned{t.value("param", ""), t.value("scale", "linear") == "log"};
-    const double lo = t.value("lower", 0.0), hi = t.value("upper", 0.0);
+    const std::string scale = optional_text(t, "scale", "linear", at);
+    if (scale != "linear" && scale != "log") throw InputError(at + ".scale: give \"linear\" or \"log\"");
+    Tuned tuned{optional_text(t, "param", "", at), scale == "log"};
+    const auto spec_of = std::find_if(info.params.begin(), info.params.end(),
+                                      [&](const ParamSpec& p) { return p.name == tuned.param; });
+    if (spec_of == info.params.end() || spec_of->type != ParamSpec::Type::Real)
+      throw InputError(at + ".param: '" + tuned.param + "' is not a real-valued parameter of " +
+                       controller_ + " (hystbench list controllers); integers and choices cannot be tuned");
+    const double lo = optional_number(t, "lower", NAN, -1e300, 1e300, at);
+    const double hi = optional_number(t, "upper", NAN, -1e300, 1e300, at);
     if (!(lo < hi) || (tuned.log && !(lo > 0.0)))
       throw InputError(at + ": give lower < upper" + std::string(tuned.log ? ", both above 0 for scale log" : ""));
     // Both ends must be valid values of the controller's parameter.
@@ -71,10 +86,9 @@ ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem
     bounds_.names.push_back(tuned.log ? "log10(" + tuned.param + ")" : tuned.param);
     tuned_.push_back(tuned);
   }
-  convergence_weight_ = spec.value("convergence_weight", 1e-3);
-  noise_seed_ = spec.value("noise_seed", std::uint64_t(1));
-  Uncontrolled none;
-  uncontrolled_ = run_loop(setup_.paths, *setup_.estimates[0].stream, none, setup_.loop, noise_seed_);
+  convergence_weight_ = optional_number(spec, "convergence_weight", 1e-3, 0.0, 1e12, "problem");
+  noise_seed_ = std::uint64_t(optional_number(spec, "noise_seed", 1, 0, 9007199254740992.0, "problem"));
+  uncontrolled_ = run_uncontrolled(setup_.paths, setup_.loop, noise_seed_);
 }
 
 std::string ControlProblem::name() const { return "control(" + experiment_.name + ", " + controller_ + ")"; }
@@ -107,6 +121,7 @@ void ControlProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen:
 
 nlohmann::json ControlProblem::describe() const {
   return {{"name", name()},
+          {"fitness", "error ratio + weight x convergence time"},
           {"experiment", experiment_.name},
           {"controller", controller_},
           {"fixed_params", fixed_},

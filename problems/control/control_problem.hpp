@@ -19,6 +19,9 @@
 //               "convergence_weight": 0.001, "noise_seed": 1, "duration_s": 30}
 //
 // A "log" parameter is searched as its log10 (bounds and names say so).
+// Only real-valued constants can be tuned. The loop uses the experiment's
+// own secondary-path estimate; estimates named by its controllers are not
+// used here.
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>

@@ -115,6 +115,7 @@ void HammersteinProblem::residuals(const Eigen::Ref<const Eigen::VectorXd>& x,
 nlohmann::json HammersteinProblem::describe() const {
   nlohmann::json j = {{"name", name()},
                       {"type", "hammerstein"},
+                      {"fitness", "SSE"},
                       {"data", data_.source},
                       {"samples", data_.size()},
                       {"sample_time", data_.sample_time},
