@@ -1,0 +1,30 @@
+# spectrum.gp: Welch spectrum of the true (noise-free) error over the steady window, uncontrolled and controlled
+#
+# Reads spectrum.csv.
+# To re-render after editing, run inside this folder:
+#     gnuplot spectrum.gp
+# It writes spectrum.svg, spectrum.png and spectrum.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set datafile separator ","
+set key outside right top
+set grid
+set xlabel "frequency (Hz)"
+set ylabel "power (dB)"
+set xrange [0:164.88]
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "spectrum.".ext
+  plot "spectrum.csv" using 1:2 with lines lw 1.5 lt 1 dt 1 title "uncontrolled" noenhanced, \
+       "spectrum.csv" using 1:3 with lines lw 1.5 lt 2 dt 1 title "FxLMS" noenhanced, \
+       "spectrum.csv" using 1:4 with lines lw 1.5 lt 3 dt 1 title "FxNLMS" noenhanced, \
+       "spectrum.csv" using 1:5 with lines lw 1.5 lt 4 dt 1 title "VSS-FxLMS" noenhanced, \
+       "spectrum.csv" using 1:6 with lines lw 1.5 lt 5 dt 1 title "VSS-FxLMS, mu_max 0.01" noenhanced, \
+       "spectrum.csv" using 1:7 with lines lw 1.5 lt 6 dt 1 title "VSS Kwong" noenhanced, \
+       "spectrum.csv" using 1:8 with lines lw 1.5 lt 7 dt 1 title "VSS Aboulnasr" noenhanced
+}
+unset output

@@ -1,0 +1,30 @@
+# weight_norm.gp: norm of the controller weights |w(n)|
+#
+# Reads traces.csv (first noise seed, every 20th sample).
+# To re-render after editing, run inside this folder:
+#     gnuplot weight_norm.gp
+# It writes weight_norm.svg, weight_norm.png and weight_norm.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set datafile separator ","
+set key outside right top
+set grid
+set xlabel "time (s)"
+set ylabel "|w|"
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "weight_norm.".ext
+  plot "traces.csv" using 1:7 with lines lw 1.5 lt 2 dt 1 title "FxNLMS, Ŝ = true actuator" noenhanced, \
+       "traces.csv" using 1:10 with lines lw 1.5 lt 3 dt 1 title "FxNLMS, Ŝ = seed-chain fit" noenhanced, \
+       "traces.csv" using 1:13 with lines lw 1.5 lt 4 dt 1 title "FxNLMS, Ŝ = discovered model" noenhanced, \
+       "traces.csv" using 1:16 with lines lw 1.5 lt 5 dt 1 title "FxNLMS, Ŝ = beam only" noenhanced, \
+       "traces.csv" using 1:19 with lines lw 1.5 lt 6 dt 1 title "VSS-FxLMS, Ŝ = true actuator" noenhanced, \
+       "traces.csv" using 1:22 with lines lw 1.5 lt 7 dt 1 title "VSS-FxLMS, Ŝ = seed-chain fit" noenhanced, \
+       "traces.csv" using 1:25 with lines lw 1.5 lt 8 dt 1 title "VSS-FxLMS, Ŝ = discovered model" noenhanced, \
+       "traces.csv" using 1:28 with lines lw 1.5 lt 1 dt 2 title "VSS-FxLMS, Ŝ = beam only" noenhanced
+}
+unset output
