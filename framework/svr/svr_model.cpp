@@ -1,0 +1,144 @@
+#include "framework/svr/svr_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "framework/core/error.hpp"
+
+namespace hystbench {
+namespace {
+
+Eigen::VectorXd to_unit(const Eigen::VectorXd& v, const MinMaxScale& s) {
+  return v.unaryExpr([&](double e) { return s.to_unit(e); });
+}
+
+// Row for predicting sample k+1: x(k..k-m), w(k..k-n), from scaled series.
+void fill_row(const Eigen::VectorXd& xs, const Eigen::VectorXd& ws, Eigen::Index k, const SvrLags& lags,
+              Eigen::Ref<Eigen::VectorXd> row) {
+  for (int i = 0; i <= lags.m; ++i) row[i] = xs[k - i];
+  for (int i = 0; i <= lags.n; ++i) row[lags.m + 1 + i] = ws[k - i];
+}
+
+nlohmann::json arx_json(const ArxFit& f) {
+  return {{"p", f.p}, {"q", f.q}, {"a", std::vector<double>(f.a.begin(), f.a.end())},
+          {"b", std::vector<double>(f.b.begin(), f.b.end())}, {"aic", f.aic}};
+}
+
+}  // namespace
+
+MinMaxScale MinMaxScale::of(const Eigen::VectorXd& x) { return {x.minCoeff(), x.maxCoeff()}; }
+
+void SvrHammerstein::regression_rows(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const SvrLags& lags,
+                                     Eigen::MatrixXd& rows, Eigen::VectorXd& targets) {
+  const Eigen::VectorXd xs = to_unit(x, MinMaxScale::of(x)), ys = to_unit(y, MinMaxScale::of(y));
+  const Eigen::Index first = std::max(lags.m, lags.n), count = ys.size() - 1 - first;
+  rows.resize(std::max<Eigen::Index>(count, 0), lags.m + lags.n + 2);
+  targets.resize(rows.rows());
+  Eigen::VectorXd row(rows.cols());
+  for (Eigen::Index r = 0; r < rows.rows(); ++r) {
+    const Eigen::Index k = first + r;
+    fill_row(xs, ys, k, lags, row);
+    rows.row(r) = row.transpose();
+    targets[r] = ys[k + 1];
+  }
+}
+
+SvrHammerstein SvrHammerstein::fit_stage1(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
+                                          const SvrLags& lags, const SvrHyperparameters& h,
+                                          const std::string& where) {
+  if (x.size() != y.size() || y.size() < lags.warmup() + 2)
+    throw InputError(where + ": stage 1 with lags m = " + std::to_string(lags.m) + ", n = " +
+                     std::to_string(lags.n) + " needs at least " + std::to_string(lags.warmup() + 2) +
+                     " samples of x and y, got " + std::to_string(x.size()) + " and " +
+                     std::to_string(y.size()));
+  const MinMaxScale xs = MinMaxScale::of(x), ys = MinMaxScale::of(y);
+  if (!(xs.hi > xs.lo) || !(ys.hi > ys.lo))
+    throw InputError(where + ": the input or the output is constant; stage 1 needs both to vary");
+  Eigen::MatrixXd rows;
+  Eigen::VectorXd targets;
+  regression_rows(x, y, lags, rows, targets);
+  return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys);
+}
+
+ArxSelection SvrHammerstein::fit_stage2(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int p_max,
+                                        int q_max, const std::string& where) {
+  arx_.reset();  // stage 2 sees stage 1 alone
+  const Eigen::VectorXd w = stage1_free_run(x, y);
+  ArxSelection s = select_arx(w, y, p_max, q_max, where);
+  arx_ = s.best;
+  return s;
+}
+
+Eigen::VectorXd SvrHammerstein::one_step(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
+  const Eigen::VectorXd xs = to_unit(x, x_scale_), ys = to_unit(y, y_scale_);
+  Eigen::VectorXd out = y;
+  Eigen::VectorXd row(lags_.m + lags_.n + 2);
+  for (Eigen::Index k = lags_.warmup() - 1; k + 1 < y.size(); ++k) {
+    fill_row(xs, ys, k, lags_, row);
+    out[k + 1] = y_scale_.from_unit(svr_.predict(row));
+  }
+  return out;
+}
+
+Eigen::VectorXd SvrHammerstein::stage1_free_run(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
+  const Eigen::VectorXd xs = to_unit(x, x_scale_);
+  Eigen::VectorXd ws = Eigen::VectorXd::Zero(x.size());
+  const Eigen::Index warm = std::min<Eigen::Index>(lags_.warmup(), x.size());
+  ws.head(warm) = to_unit(y.head(warm), y_scale_);
+  Eigen::VectorXd row(lags_.m + lags_.n + 2);
+  for (Eigen::Index k = warm - 1; k + 1 < x.size(); ++k) {
+    fill_row(xs, ws, k, lags_, row);
+    ws[k + 1] = svr_.predict(row);
+  }
+  return ws.unaryExpr([&](double s) { return y_scale_.from_unit(s); });
+}
+
+Eigen::VectorXd SvrHammerstein::simulate(const Eigen::VectorXd& x, const Eigen::VectorXd& y_start) const {
+  const Eigen::VectorXd w = stage1_free_run(x, y_start);
+  return arx_ ? arx_->simulate(w) : w;
+}
+
+nlohmann::json SvrHammerstein::to_json() const {
+  nlohmann::json j = {{"model", "svr_hammerstein"},
+                      {"lags", {{"m", lags_.m}, {"n", lags_.n}}},
+                      {"input_scale", {{"min", x_scale_.lo}, {"max", x_scale_.hi}}},
+                      {"output_scale", {{"min", y_scale_.lo}, {"max", y_scale_.hi}}},
+                      {"svr", svr_.to_json()}};
+  if (arx_) j["arx"] = arx_json(*arx_);
+  return j;
+}
+
+SvrHammerstein SvrHammerstein::from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    if (j.value("model", "") != "svr_hammerstein")
+      throw InputError(where + ".model: not \"svr_hammerstein\"; this is not an SVR model file");
+    const SvrLags lags{j.at("lags").at("m").get<int>(), j.at("lags").at("n").get<int>()};
+    const MinMaxScale xs{j.at("input_scale").at("min").get<double>(), j.at("input_scale").at("max").get<double>()};
+    const MinMaxScale ys{j.at("output_scale").at("min").get<double>(),
+                         j.at("output_scale").at("max").get<double>()};
+    SvrRegressor svr = SvrRegressor::from_json(j.at("svr"), where + ".svr");
+    if (svr.dimension() != lags.m + lags.n + 2)
+      throw InputError(where + ".svr.dimension: " + std::to_string(svr.dimension()) +
+                       " does not match the lags (m + n + 2 = " + std::to_string(lags.m + lags.n + 2) + ")");
+    SvrHammerstein model(std::move(svr), lags, xs, ys);
+    if (j.contains("arx")) {
+      const auto& a = j["arx"];
+      ArxFit f;
+      f.p = a.at("p").get<int>();
+      f.q = a.at("q").get<int>();
+      const auto av = a.at("a").get<std::vector<double>>(), bv = a.at("b").get<std::vector<double>>();
+      f.a = Eigen::Map<const Eigen::VectorXd>(av.data(), Eigen::Index(av.size()));
+      f.b = Eigen::Map<const Eigen::VectorXd>(bv.data(), Eigen::Index(bv.size()));
+      f.aic = a.value("aic", 0.0);
+      f.stable = true;
+      if (f.a.size() != f.p || f.b.size() != f.q)
+        throw InputError(where + ".arx: a and b must have p and q coefficients");
+      model.arx_ = f;
+    }
+    return model;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + ": not an SVR model (" + std::string(e.what()) + ")");
+  }
+}
+
+}  // namespace hystbench

@@ -1,0 +1,168 @@
+#include "problems/svr/svr_hyperparameters.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "framework/core/error.hpp"
+#include "framework/core/parameters.hpp"
+#include "framework/io/data_path.hpp"
+#include "framework/io/measurement.hpp"
+
+namespace hystbench {
+namespace {
+
+const std::vector<std::string>& problem_keys() {
+  static const std::vector<std::string> keys = {
+      "type",    "data",          "columns", "lags",        "fitness",  "folds", "holdout",
+      "cv_seed", "max_rows",      "log10_epsilon", "log10_C", "log10_sigma"};
+  return keys;
+}
+
+// [lo, hi] from the spec, or the default box.
+void bound(const nlohmann::json& spec, const std::string& key, double lo, double hi, Bounds& b) {
+  if (spec.contains(key)) {
+    const auto& v = spec[key];
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+        !(v[0].get<double>() < v[1].get<double>()))
+      throw InputError("problem." + key + ": give [lower, upper] with lower < upper");
+    lo = v[0].get<double>();
+    hi = v[1].get<double>();
+  }
+  const Eigen::Index i = b.lower.size();
+  b.lower.conservativeResize(i + 1);
+  b.upper.conservativeResize(i + 1);
+  b.lower[i] = lo;
+  b.upper[i] = hi;
+  b.names.push_back(key);
+}
+
+// Every k-th row, so that at most `most` remain, spread over the record.
+void decimate(Eigen::MatrixXd& rows, Eigen::VectorXd& targets, Eigen::Index most) {
+  if (rows.rows() <= most) return;
+  const Eigen::Index step = (rows.rows() + most - 1) / most, kept = (rows.rows() + step - 1) / step;
+  Eigen::MatrixXd r(kept, rows.cols());
+  Eigen::VectorXd t(kept);
+  for (Eigen::Index i = 0; i < kept; ++i) {
+    r.row(i) = rows.row(i * step);
+    t[i] = targets[i * step];
+  }
+  rows = std::move(r);
+  targets = std::move(t);
+}
+
+double mean_squared(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).squaredNorm() / double(a.size());
+}
+
+}  // namespace
+
+ProblemInfo SvrHyperparameterProblem::info() {
+  return {"svr_hyperparameters",
+          "epsilon, C and sigma of the SVR model's stage 1 (log10 box), fitness = validation "
+          "error of the one-step prediction (blocked CV, libsvm CV or free-run hold-out)",
+          problem_keys(),
+          [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
+            return std::unique_ptr<Problem>(new SvrHyperparameterProblem(spec, base_dir));
+          }};
+}
+
+SvrHyperparameterProblem::SvrHyperparameterProblem(const nlohmann::json& spec,
+                                                   const std::filesystem::path& base_dir) {
+  require_known_keys(spec, problem_keys(), "problem");
+  if (!spec.contains("data") || !spec["data"].is_string())
+    throw InputError("problem.data: give the training record (CSV with t, u, y), e.g. the 1 Hz record");
+  const auto path = resolve_data_path(spec["data"].get<std::string>(), base_dir, "problem.data");
+  const ColumnMap columns = spec.contains("columns") ? ColumnMap::from_json(spec["columns"], "problem.columns")
+                                                     : ColumnMap{};
+  const Measurement m = read_measurement(path, columns);
+  data_name_ = path.filename().string();
+  x_ = m.u;
+  y_ = m.y;
+  const nlohmann::json lags = spec.value("lags", nlohmann::json::object());
+  lags_ = {int(optional_number(lags, "m", 4, 0, 50, "problem.lags")),
+           int(optional_number(lags, "n", 4, 0, 50, "problem.lags"))};
+  const std::string fitness = optional_text(spec, "fitness", "blocked_cv", "problem");
+  if (fitness == "blocked_cv") fitness_ = Fitness::BlockedCv;
+  else if (fitness == "libsvm_cv") fitness_ = Fitness::LibsvmCv;
+  else if (fitness == "freerun_holdout") fitness_ = Fitness::FreerunHoldout;
+  else throw InputError("problem.fitness: give blocked_cv, libsvm_cv or freerun_holdout");
+  folds_ = int(optional_number(spec, "folds", 5, 2, 100, "problem"));
+  holdout_ = optional_number(spec, "holdout", 0.25, 0.05, 0.9, "problem");
+  cv_seed_ = unsigned(optional_number(spec, "cv_seed", 1, 0, 4294967295.0, "problem"));
+  if (y_.size() < lags_.warmup() + 2 * folds_)
+    throw InputError(path.string() + ": " + std::to_string(y_.size()) + " samples are too few for lags m = " +
+                     std::to_string(lags_.m) + ", n = " + std::to_string(lags_.n) + " and " +
+                     std::to_string(folds_) + " folds");
+  SvrHammerstein::regression_rows(x_, y_, lags_, rows_, targets_);
+  decimate(rows_, targets_, Eigen::Index(optional_number(spec, "max_rows", 2000, 10, 1e7, "problem")));
+  bound(spec, "log10_epsilon", -4, -1, bounds_);
+  bound(spec, "log10_C", -1, 7, bounds_);
+  bound(spec, "log10_sigma", -2, 4, bounds_);
+}
+
+std::string SvrHyperparameterProblem::name() const { return "svr_hyperparameters(" + data_name_ + ")"; }
+
+SvrHyperparameters SvrHyperparameterProblem::hyperparameters_of(const Eigen::Ref<const Eigen::VectorXd>& x) {
+  return {std::pow(10.0, x[0]), std::pow(10.0, x[1]), std::pow(10.0, x[2])};
+}
+
+double SvrHyperparameterProblem::blocked_cv(const SvrHyperparameters& h) const {
+  const Eigen::Index n = rows_.rows();
+  double sum = 0.0;
+  for (int f = 0; f < folds_; ++f) {
+    const Eigen::Index begin = n * f / folds_, end = n * (f + 1) / folds_;
+    Eigen::MatrixXd train(n - (end - begin), rows_.cols());
+    Eigen::VectorXd train_targets(train.rows());
+    train << rows_.topRows(begin), rows_.bottomRows(n - end);
+    train_targets << targets_.head(begin), targets_.tail(n - end);
+    const SvrRegressor svr = SvrRegressor::train(train, train_targets, h, "problem");
+    for (Eigen::Index r = begin; r < end; ++r) {
+      const double e = svr.predict(rows_.row(r).transpose()) - targets_[r];
+      sum += e * e;
+    }
+  }
+  return sum / double(n);
+}
+
+double SvrHyperparameterProblem::libsvm_cv(const SvrHyperparameters& h) const {
+  return mean_squared(SvrRegressor::libsvm_cross_validation(rows_, targets_, h, folds_, cv_seed_, "problem"),
+                      targets_);
+}
+
+double SvrHyperparameterProblem::freerun_holdout(const SvrHyperparameters& h) const {
+  const Eigen::Index cut = Eigen::Index(double(y_.size()) * (1.0 - holdout_));
+  const SvrHammerstein model = SvrHammerstein::fit_stage1(x_.head(cut), y_.head(cut), lags_, h, "problem");
+  // The held-out part in free run, started from its own first samples.
+  const Eigen::VectorXd x = x_.tail(y_.size() - cut), y = y_.tail(y_.size() - cut);
+  const double range = y_.maxCoeff() - y_.minCoeff();
+  return mean_squared(model.simulate(x, y) / (0.5 * range), y / (0.5 * range));
+}
+
+double SvrHyperparameterProblem::fitness(const SvrHyperparameters& h) const {
+  switch (fitness_) {
+    case Fitness::BlockedCv: return blocked_cv(h);
+    case Fitness::LibsvmCv: return libsvm_cv(h);
+    case Fitness::FreerunHoldout: return freerun_holdout(h);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+void SvrHyperparameterProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                                        Eigen::Ref<Eigen::VectorXd> f) const {
+  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(hyperparameters_of(X.col(i)));
+}
+
+nlohmann::json SvrHyperparameterProblem::describe() const {
+  const char* names[] = {"blocked_cv", "libsvm_cv", "freerun_holdout"};
+  return {{"name", name()},
+          {"fitness", std::string("MSE, ") + names[int(fitness_)]},
+          {"data", data_name_},
+          {"lags", {{"m", lags_.m}, {"n", lags_.n}}},
+          {"rows", rows_.rows()},
+          {"folds", folds_},
+          {"parameters", bounds_.names}};
+}
+
+}  // namespace hystbench
+
+HYSTBENCH_PROBLEM(hystbench::SvrHyperparameterProblem)
