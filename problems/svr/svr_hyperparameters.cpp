@@ -7,6 +7,7 @@
 #include "framework/core/parameters.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/io/measurement.hpp"
+#include "framework/svr/svr_validation.hpp"
 
 namespace hystbench {
 namespace {
@@ -107,21 +108,7 @@ SvrHyperparameters SvrHyperparameterProblem::hyperparameters_of(const Eigen::Ref
 }
 
 double SvrHyperparameterProblem::blocked_cv(const SvrHyperparameters& h) const {
-  const Eigen::Index n = rows_.rows();
-  double sum = 0.0;
-  for (int f = 0; f < folds_; ++f) {
-    const Eigen::Index begin = n * f / folds_, end = n * (f + 1) / folds_;
-    Eigen::MatrixXd train(n - (end - begin), rows_.cols());
-    Eigen::VectorXd train_targets(train.rows());
-    train << rows_.topRows(begin), rows_.bottomRows(n - end);
-    train_targets << targets_.head(begin), targets_.tail(n - end);
-    const SvrRegressor svr = SvrRegressor::train(train, train_targets, h, "problem");
-    for (Eigen::Index r = begin; r < end; ++r) {
-      const double e = svr.predict(rows_.row(r).transpose()) - targets_[r];
-      sum += e * e;
-    }
-  }
-  return sum / double(n);
+  return blocked_cv_error(rows_, targets_, h, folds_);
 }
 
 double SvrHyperparameterProblem::libsvm_cv(const SvrHyperparameters& h) const {
