@@ -10,7 +10,7 @@
 // fitted on a frequency scan, with w the free-running stage 1 output.
 // Inputs and outputs are min-max scaled to [-1, 1] with ranges stored in the
 // model. RECONSTRUCTION: the seed gives the structure, m = n = 4 and the
-// orders by AIC, not how the stages are coupled (docs/svr.md#reconstruction).
+// orders by AIC, not how the stages are coupled (docs/svr.md#stage-2).
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <optional>

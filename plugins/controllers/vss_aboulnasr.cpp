@@ -1,4 +1,4 @@
-// Aboulnasr & Mayyas's variable step (docs/control.md#vss-aboulnasr): the
+// Aboulnasr & Mayyas's variable step (docs/control.md#vss_aboulnasr): the
 // step follows the squared, smoothed correlation of successive errors,
 // p(n) = beta p(n-1) + (1 - beta) e(n) e(n-1), in which white measurement
 // noise averages out.

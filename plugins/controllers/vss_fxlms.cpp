@@ -1,5 +1,5 @@
 // Variable-step FxNLMS driven by the normalised change of the error level
-// (docs/control.md#vss-fxlms). RECONSTRUCTION: seed 000 names the rule
+// (docs/control.md#vss_fxlms). RECONSTRUCTION: seed 000 names the rule
 // ("step size adaptation based on normalized error change") but its formula
 // was not available; this is our rebuild, and results made with it are
 // labelled reconstructed.
@@ -43,7 +43,7 @@ class VssFxlms : public VariableStepFxlms {
         "RECONSTRUCTION of the VSS-FxLMS of seed 000 (Umar et al., J. Low Freq. Noise Vib. "
         "Active Control, 2024, doi:10.1177/14613484241295460), keeping Kwong and Johnston's "
         "recursion (IEEE TSP 40(7), 1992) with a normalised error-change drive; constants are "
-        "this project's choice (docs/control.md#vss-fxlms)",
+        "this project's choice (docs/control.md#vss_fxlms)",
         specs};
     info.reconstructed = true;
     return info;

@@ -1,4 +1,4 @@
-// Kwong & Johnston's variable step (docs/control.md#vss-kwong): the step
+// Kwong & Johnston's variable step (docs/control.md#vss_kwong): the step
 // follows the squared error, mu(n+1) = alpha mu(n) + gamma e(n)^2, clipped.
 // Large while the error is large, but also driven up by measurement noise,
 // since gamma multiplies the error's absolute level.
