@@ -26,19 +26,20 @@ ActuatorModel actuator_model(const nlohmann::json& spec, const LoopSettings& loo
   for (const char* key : {"input_scale", "input_offset", "unit_gain"}) model.erase(key);
   ModelStream m = model_stream(model, base_dir, 1.0 / loop.sample_rate_hz, where);
   ActuatorModel a;
-  a.stream = std::make_unique<ScaledStream>(std::move(m.stream), scale, 1.0, offset);
+  auto scaled = std::make_unique<ScaledStream>(std::move(m.stream), scale, 1.0, offset);
   a.description = m.description;
   if (scale != 1.0 || offset != 0.0)
     a.description += ", input " + (offset != 0.0 ? number_text(offset) + " + " : "") +
                      number_text(scale) + " u";
   if (unit_gain) {
     a.gain_divided_out =
-        std::abs(first_harmonic(*a.stream, probe_at(loop, loop.disturbance_amplitude)));
+        std::abs(first_harmonic(*scaled, probe_at(loop, loop.disturbance_amplitude)));
     if (!(a.gain_divided_out > 0.0) || !std::isfinite(a.gain_divided_out))
       throw InputError(where + ": the model gives no first harmonic at " +
                        number_text(loop.disturbance_hz) + " Hz; check its parameters");
-    a.stream = std::make_unique<ScaledStream>(std::move(a.stream), 1.0, 1.0 / a.gain_divided_out);
+    scaled->set_output_scale(1.0 / a.gain_divided_out);
   }
+  a.stream = std::move(scaled);
   return a;
 }
 

@@ -22,8 +22,6 @@ FxlmsOptions fxlms_options(const Params& p) {
           p.real("delta")};
 }
 
-double clip_step(double mu, double lower, double upper) { return std::clamp(mu, lower, upper); }
-
 FxlmsController::FxlmsController(const FxlmsOptions& options)
     : options_(options),
       w_(Eigen::VectorXd::Zero(options.taps)),

@@ -56,7 +56,4 @@ class FxlmsController : public Controller {
   double step_ = 0.0;
 };
 
-// Clip of a step size to [lower, upper].
-double clip_step(double mu, double lower, double upper);
-
 }  // namespace hystbench

@@ -23,6 +23,7 @@ class ScaledStream final : public SignalStream {
         output_scale_(other.output_scale_),
         input_offset_(other.input_offset_) {}
 
+  void set_output_scale(double scale) { output_scale_ = scale; }
   void reset() override { inner_->reset(); }
   double step(double u) override {
     return output_scale_ * inner_->step(input_offset_ + input_scale_ * u);

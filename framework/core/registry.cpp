@@ -1,8 +1,5 @@
 #include "framework/core/registry.hpp"
 
-#include "framework/core/error.hpp"
-#include "framework/core/text.hpp"
-#include "framework/model/effect.hpp"
 
 namespace hystbench {
 

@@ -8,6 +8,7 @@
 // error correlation (Aboulnasr), the normalised change of the error power
 // (vss_fxlms). Steps are in the normalised domain unless "normalize" is
 // turned off.
+#include <algorithm>
 #include <string>
 
 #include "framework/control/fxlms_controller.hpp"
@@ -57,7 +58,7 @@ class VariableStepFxlms : public FxlmsController {
   virtual void reset_drive() = 0;
 
  private:
-  void advance(double drive) { mu_ = clip_step(alpha_ * mu_ + gamma_ * drive, mu_min_, mu_max_); }
+  void advance(double drive) { mu_ = std::clamp(alpha_ * mu_ + gamma_ * drive, mu_min_, mu_max_); }
 
   double mu_min_, mu_max_, alpha_, gamma_;
   double mu_;
