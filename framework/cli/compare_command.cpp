@@ -7,12 +7,15 @@
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/number_range.hpp"
+#include "framework/cli/svr_comparison.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/discovery/noise_floor.hpp"
+#include "framework/io/json_file.hpp"
+#include "framework/svr/svr_model.hpp"
 
 namespace hystbench::cli {
 namespace {
@@ -48,54 +51,35 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
   return prepare_model_data(m, fit.scales, holdout);
 }
 
-void print_part(const char* name, const ErrorMetrics& m, const std::string& unit) {
-  // fit % divides by the spread of y about its mean.
-  const std::string fit = std::isfinite(m.fit_percent) ? "fit " + quantity(m.fit_percent, "%")
-                                                       : "fit % not defined (y is constant)";
-  std::cout << "  " << name << ": RMSE " << quantity(m.rmse, unit) << ", " << fit << ", " << m.n
-            << " samples\n";
-}
-
-void print_headline(const Comparison& metrics, const std::string& unit) {
-  // Without a hold-out every sample is an estimation sample: "all" says it.
-  if (metrics.parts.heldout) {
-    print_part("estimation", metrics.parts.estimation, unit);
-    print_part("heldout", *metrics.parts.heldout, unit);
-  }
-  print_part("all", metrics.parts.all, unit);
-  const ComparedNoiseFloor& floor = metrics.noise_floor;
-  if (std::isfinite(floor.sigma)) {
-    std::cout << "  estimated noise sigma " << quantity(floor.sigma, unit);
-    if (std::isfinite(floor.rmse_over_sigma))
-      std::cout << " (RMSE / sigma " << quantity(floor.rmse_over_sigma, "") << ")";
-    std::cout << "\n";
-  } else {
-    std::cout << "  noise sigma not estimated (fewer than " << kNoiseFloorFewestSamples
-              << " samples)\n";
-  }
+void report(const CompareOptions& o, const DataSource& source, const ModelData& data, Eigen::VectorXd y,
+            const std::string& model_text) {
+  const auto dir = o.output.prepare("metrics.json");
+  const auto input = comparison_input(data, std::move(y), source.u_unit, source.y_unit);
+  const auto metrics = compare_signals(input);
+  const auto files = write_comparison(dir, input, metrics, "Model " + model_text + " against " + source.file_name(),
+                                      model_text);
+  std::cout << "model " << model_text << " on " << o.data.data
+            << (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : "")
+            << "\n";
+  print_comparison_headline(metrics, source.y_unit);
+  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
 }
 
 void compare(const CompareOptions& o, const CLI::App& cmd) {
+  const nlohmann::json file = read_json_file(o.fit, "model file");
+  if (SvrHammerstein::is_model_file(file)) {
+    if (o.periods > 1) throw InputError("--periodic needs a catalog fit.json; an SVR model runs from measured samples");
+    compare_svr_model(file, o.fit, o.data, o.output, cmd);
+    return;
+  }
   const FitRecord fit = FitRecord::read(o.fit);
   DataSource source = o.data.source();
   const ModelData data = data_for(o, fit, source, cmd);
-  const auto dir = o.output.prepare("metrics.json");
   Eigen::VectorXd y;
   if (!simulate_physical(fit.model, fit.x, data, y, o.periods))
     throw InputError(o.fit + ": the model diverges on " + o.data.data +
                      " (input outside the range it was fitted on?)");
-  const auto input = comparison_input(data, std::move(y), source.u_unit, source.y_unit);
-  const auto metrics = compare_signals(input);
-  const auto files = write_comparison(dir, input, metrics,
-                                      "Model " + fit.model.text() + " against " + source.file_name(),
-                                      fit.model.text());
-  std::cout << "model " << fit.model.text() << " on " << o.data.data
-            << (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) +
-                                    " periods)"
-                              : "")
-            << "\n";
-  print_headline(metrics, source.y_unit);
-  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
+  report(o, source, data, std::move(y), fit.model.text());
 }
 
 }  // namespace
@@ -107,7 +91,9 @@ Action add_compare_command(CLI::App& app) {
                  "segment, amplitude, branch and time, residual whiteness and input correlation, "
                  "noise floor; writes metrics.json, report.md and figures");
   add_data_options(cmd, o->data);
-  cmd->add_option("--fit", o->fit, "fit.json written by `hystbench fit` or `discover`")
+  cmd->add_option("--fit", o->fit,
+                  "fit.json written by `hystbench fit` or `discover`, or svr_model.json written by "
+                  "`hystbench svr`")
       ->required();
   cmd->add_option("--periodic", o->periods,
                   "the data are one period of a periodic input: simulate this many periods from "

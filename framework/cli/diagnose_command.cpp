@@ -5,10 +5,13 @@
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
+#include "framework/cli/svr_comparison.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/diagnosis_report.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
+#include "framework/io/json_file.hpp"
+#include "framework/svr/svr_model.hpp"
 
 namespace hystbench::cli {
 namespace {
@@ -33,10 +36,27 @@ void print_diagnosis(const Diagnosis& d, const std::string& unit) {
   if (const Candidate* w = d.winner()) std::cout << w->evidence << "\n";
 }
 
+// A black-box model has no chain to add an effect to, so no candidate is
+// refitted: the report holds the where-it-fails breakdowns and every
+// effect's residual signature, which say what physics the residual shows.
+void diagnose_svr(const DiagnoseCommandOptions& o, const nlohmann::json& file, const CLI::App& cmd) {
+  const Comparison c = compare_svr_model(file, o.from_fit, o.data, o.output, cmd);
+  std::cout << "residual signatures (report.md, metrics.json):\n";
+  for (const EffectSignature& s : c.signatures)
+    if (!s.sentence.empty()) std::cout << "  " << s.effect << ": " << s.sentence << "\n";
+  std::cout << "candidates: none tried. diagnose refits a catalog chain with each missing effect added; "
+               "an SVR model has no chain to extend. Fit a catalog model to the same data (hystbench fit "
+               "or discover) to test an effect.\n";
+}
+
 void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   // Counted, not tested for text: `--model ""` is a mistake to report, not a missing option.
   if ((cmd.count("--model") > 0) == (cmd.count("--fit") > 0))
     throw InputError("diagnose: give either --model LIST (fit it first) or --fit FIT.json");
+  if (cmd.count("--fit")) {
+    const nlohmann::json file = read_json_file(o.from_fit, "model file");
+    if (SvrHammerstein::is_model_file(file)) return diagnose_svr(o, file, cmd);
+  }
   DataSource source = o.data.source();
   const Measurement m = source.load();
   const HoldoutSpec holdout = o.data.holdout_spec();
@@ -74,7 +94,9 @@ Action add_diagnose_command(CLI::App& app) {
                   "evidence; writes diagnosis.json, report.md and figures");
   add_data_options(cmd, o->data);
   cmd->add_option("--model", o->model, "effects of the model to diagnose, e.g. hysteresis,msd");
-  cmd->add_option("--fit", o->from_fit, "diagnose this fit.json instead of fitting --model");
+  cmd->add_option("--fit", o->from_fit,
+                  "diagnose this fit.json instead of fitting --model; an svr_model.json (hystbench svr) "
+                  "gets its breakdowns and residual signatures, with no candidate refits");
   add_fit_options(cmd, o->fit);
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);

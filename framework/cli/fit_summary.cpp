@@ -1,8 +1,10 @@
 #include "framework/cli/fit_summary.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
+#include "framework/discovery/noise_floor.hpp"
 #include "framework/report/table_format.hpp"
 
 namespace hystbench::cli {
@@ -26,6 +28,37 @@ void print_errors(const FitErrors& e, const std::string& unit) {
   if (e.n_heldout) std::cout << ", " << e.rmse_heldout << " " << unit << " on " << e.n_heldout
                              << " held-out samples";
   std::cout << "\n";
+}
+
+namespace {
+
+void print_part(const char* name, const ErrorMetrics& m, const std::string& unit) {
+  // fit % divides by the spread of y about its mean.
+  const std::string fit = std::isfinite(m.fit_percent) ? "fit " + quantity(m.fit_percent, "%")
+                                                       : "fit % not defined (y is constant)";
+  std::cout << "  " << name << ": RMSE " << quantity(m.rmse, unit) << ", " << fit << ", " << m.n
+            << " samples\n";
+}
+
+}  // namespace
+
+void print_comparison_headline(const Comparison& metrics, const std::string& unit) {
+  // Without a hold-out every sample is an estimation sample: "all" says it.
+  if (metrics.parts.heldout) {
+    print_part("estimation", metrics.parts.estimation, unit);
+    print_part("heldout", *metrics.parts.heldout, unit);
+  }
+  print_part("all", metrics.parts.all, unit);
+  const ComparedNoiseFloor& floor = metrics.noise_floor;
+  if (std::isfinite(floor.sigma)) {
+    std::cout << "  estimated noise sigma " << quantity(floor.sigma, unit);
+    if (std::isfinite(floor.rmse_over_sigma))
+      std::cout << " (RMSE / sigma " << quantity(floor.rmse_over_sigma, "") << ")";
+    std::cout << "\n";
+  } else {
+    std::cout << "  noise sigma not estimated (fewer than " << kNoiseFloorFewestSamples
+              << " samples)\n";
+  }
 }
 
 }  // namespace hystbench::cli

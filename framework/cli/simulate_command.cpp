@@ -10,38 +10,38 @@
 #include "framework/core/error.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
 #include "framework/io/atomic_file.hpp"
+#include "framework/io/json_file.hpp"
 #include "problems/hammerstein/synthetic_data.hpp"
 
 namespace hystbench::cli {
 namespace {
 
+std::string number_text(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
 struct SimulateOptions {
   std::string params, excitation, out, form = "increment", input_unit, output_unit, model;
   InputHold input_hold = InputHold::Spline;
   int substeps = 0;
-  double noise = 0.01;
+  double noise = 0.01, resolution = 0.0;
   std::uint64_t seed = 1;
 };
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open this file");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
-    throw InputError(path + ": not valid JSON: " + e.what());
-  }
-}
-
 SyntheticData make_data(const SimulateOptions& o) {
-  const auto values = read_json_file(o.params);
-  const auto excitation = read_json_file(o.excitation);
+  const auto values = read_json_file(o.params, "parameter file");
+  const auto excitation = read_json_file(o.excitation, "excitation file");
   if (!o.model.empty()) {
     Model model = Model::parse(o.model);
     model.set_substeps(o.substeps);
     model.set_input_hold(o.input_hold);
-    return make_model_synthetic_data(model, values, excitation, o.noise, o.seed, o.params);
+    return make_model_synthetic_data(model, values, excitation, o.noise, o.seed, o.params,
+                                     o.resolution);
   }
+  if (o.resolution > 0.0)
+    throw InputError("--resolution needs --model: give the effects to simulate, e.g. --model hysteresis,msd");
   const auto params = read_hammerstein_params(values, o.params);
   try {
     return make_synthetic_data(params, bouc_wen_form_from_string(o.form), excitation, o.noise, o.seed);
@@ -54,8 +54,6 @@ void simulate(const SimulateOptions& o) {
   SyntheticData s = make_data(o);
   std::filesystem::path truth_path(o.out);
   truth_path.replace_extension(".truth.json");
-  std::ostringstream noise;
-  noise << o.noise;
   const std::string command = "hystbench simulate" +
                               (o.model.empty() ? "" : " --model " + o.model) +
                               (o.substeps ? " --substeps " + std::to_string(o.substeps) : "") +
@@ -63,8 +61,9 @@ void simulate(const SimulateOptions& o) {
                                    ? " --input-hold " + to_string(o.input_hold)
                                    : "") +
                               " --params " + o.params + " --excitation " +
-                              o.excitation + " --noise " + noise.str() +
+                              o.excitation + " --noise " + number_text(o.noise) +
                               " --seed " + std::to_string(o.seed) +
+                              (o.resolution > 0.0 ? " --resolution " + number_text(o.resolution) : "") +
                               (o.input_unit.empty() ? "" : " --input-unit " + o.input_unit) +
                               (o.output_unit.empty() ? "" : " --output-unit " + o.output_unit) +
                               " --out " + o.out;
@@ -104,6 +103,11 @@ Action add_simulate_command(CLI::App& app) {
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")
       ->capture_default_str()
       ->check(number_range(0.0, 10.0, "give a fraction of the output RMS from 0 to 10"));
+  cmd->add_option("--resolution", o->resolution,
+                  "sensor resolution in output units: y is rounded to its multiples after the "
+                  "noise (0: none; needs --model)")
+      ->capture_default_str()
+      ->check(number_range(0.0, 1e6, "give a resolution of 0 (none) or more"));
   cmd->add_option("--seed", o->seed, "noise seed")->capture_default_str();
   cmd->add_option("--form", o->form, "Bouc-Wen form")->capture_default_str()
       ->check(CLI::IsMember({"increment", "paper"}));

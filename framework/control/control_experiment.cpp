@@ -5,6 +5,7 @@
 #include <set>
 
 #include "framework/core/error.hpp"
+#include "framework/io/json_file.hpp"
 #include "framework/core/text.hpp"
 
 namespace hystbench {
@@ -84,15 +85,7 @@ std::unique_ptr<Controller> ControllerEntry::make() const {
 }
 
 ControlExperiment ControlExperiment::load(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open the experiment file; check the path");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string() + ": not valid JSON: " + e.what());
-  }
-  ControlExperiment x = from_json(j, file.string());
+  ControlExperiment x = from_json(read_json_file(file, "experiment file"), file.string());
   x.base_dir = file.parent_path();
   return x;
 }

@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include "framework/core/error.hpp"
+#include "framework/io/json_file.hpp"
 #include "framework/discovery/fit_errors.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/report/provenance.hpp"
@@ -57,14 +58,7 @@ nlohmann::json FitRecord::to_json() const {
 
 FitRecord FitRecord::read(const std::filesystem::path& path) {
   const std::string where = path.string();
-  std::ifstream in(path);
-  if (!in) throw InputError(where + ": cannot open this fit file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
-    throw InputError(where + ": not valid JSON: " + e.what());
-  }
+  const nlohmann::json j = read_json_file(path, "fit file");
   if (j.value("format", "") != "hystbench-fit/1")
     throw InputError(where + ": not a fit file written by `hystbench fit` (format key)");
   FitRecord r{Model::parse(require(j, "model", where).get<std::string>(), where + " model")};

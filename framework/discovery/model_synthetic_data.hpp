@@ -12,10 +12,12 @@ namespace hystbench {
 // `values`: physical parameter values {"gain": .., "hysteresis.A": .., ...}
 // (or {"parameters": {...}}), every parameter of `model` required. The truth
 // records the model, the values, the noise sd and the noise-floor SSE.
-// Throws InputError when a value is missing or the model diverges.
+// `resolution` > 0 rounds the noisy output to its multiples, as a sensor of
+// that resolution reads it. Throws InputError when a value is missing or the
+// model diverges.
 SyntheticData make_model_synthetic_data(const Model& model, const nlohmann::json& values,
                                         const nlohmann::json& excitation_spec,
                                         double noise_relative, std::uint64_t seed,
-                                        const std::string& where);
+                                        const std::string& where, double resolution = 0.0);
 
 }  // namespace hystbench

@@ -43,9 +43,22 @@ void SvrHammerstein::regression_rows(const Eigen::VectorXd& x, const Eigen::Vect
   }
 }
 
+void SvrHammerstein::decimate(Eigen::MatrixXd& rows, Eigen::VectorXd& targets, Eigen::Index most) {
+  if (rows.rows() <= most) return;
+  const Eigen::Index step = (rows.rows() + most - 1) / most, kept = (rows.rows() + step - 1) / step;
+  Eigen::MatrixXd r(kept, rows.cols());
+  Eigen::VectorXd t(kept);
+  for (Eigen::Index i = 0; i < kept; ++i) {
+    r.row(i) = rows.row(i * step);
+    t[i] = targets[i * step];
+  }
+  rows = std::move(r);
+  targets = std::move(t);
+}
+
 SvrHammerstein SvrHammerstein::fit_stage1(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
                                           const SvrLags& lags, const SvrHyperparameters& h,
-                                          const std::string& where) {
+                                          const std::string& where, Eigen::Index max_rows) {
   if (x.size() != y.size() || y.size() < lags.warmup() + 2)
     throw InputError(where + ": stage 1 with lags m = " + std::to_string(lags.m) + ", n = " +
                      std::to_string(lags.n) + " needs at least " + std::to_string(lags.warmup() + 2) +
@@ -57,6 +70,7 @@ SvrHammerstein SvrHammerstein::fit_stage1(const Eigen::VectorXd& x, const Eigen:
   Eigen::MatrixXd rows;
   Eigen::VectorXd targets;
   regression_rows(x, y, lags, rows, targets);
+  if (max_rows > 0) decimate(rows, targets, max_rows);
   return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys);
 }
 
@@ -96,6 +110,11 @@ Eigen::VectorXd SvrHammerstein::stage1_free_run(const Eigen::VectorXd& x, const 
 Eigen::VectorXd SvrHammerstein::simulate(const Eigen::VectorXd& x, const Eigen::VectorXd& y_start) const {
   const Eigen::VectorXd w = stage1_free_run(x, y_start);
   return arx_ ? arx_->simulate(w) : w;
+}
+
+std::string SvrHammerstein::describe() const {
+  return "svr_hammerstein(m = " + std::to_string(lags_.m) + ", n = " + std::to_string(lags_.n) +
+         (arx_ ? ", ARX " + std::to_string(arx_->p) + "/" + std::to_string(arx_->q) : std::string(", no ARX")) + ")";
 }
 
 nlohmann::json SvrHammerstein::to_json() const {

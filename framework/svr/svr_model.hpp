@@ -39,12 +39,18 @@ class SvrHammerstein {
  public:
   // Stage 1 on (x, y). Throws InputError naming `where` when the record is
   // shorter than the lags need, constant, or the hyperparameters invalid.
+  // `max_rows` > 0 trains on at most that many rows (decimate()).
   static SvrHammerstein fit_stage1(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const SvrLags& lags,
-                                   const SvrHyperparameters& h, const std::string& where);
+                                   const SvrHyperparameters& h, const std::string& where,
+                                   Eigen::Index max_rows = 0);
   // The rows and targets stage 1 trains on, scaled by the record's ranges
   // (hyperparameter tuning validates on them).
   static void regression_rows(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const SvrLags& lags,
                               Eigen::MatrixXd& rows, Eigen::VectorXd& targets);
+
+  // Keeps every k-th row, the least k that leaves at most `most`, so the
+  // rows kept spread over the whole record.
+  static void decimate(Eigen::MatrixXd& rows, Eigen::VectorXd& targets, Eigen::Index most);
 
   // Stage 2 on a scan (x, y): AIC over p, q in 1..max. Returns the grid.
   ArxSelection fit_stage2(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int p_max, int q_max,
@@ -65,6 +71,12 @@ class SvrHammerstein {
   const std::optional<ArxFit>& arx() const { return arx_; }
 
   nlohmann::json to_json() const;
+  // "svr_hammerstein(m = 4, n = 4, ARX 2/2)": the model's name in reports.
+  std::string describe() const;
+  // Whether a JSON file holds an SVR model (else, e.g., a catalog fit.json).
+  static bool is_model_file(const nlohmann::json& j) {
+    return j.is_object() && j.value("model", nlohmann::json()) == "svr_hammerstein";
+  }
   // Throws InputError naming `where` and the key.
   static SvrHammerstein from_json(const nlohmann::json& j, const std::string& where);
 

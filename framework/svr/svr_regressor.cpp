@@ -2,11 +2,13 @@
 
 #include <svm.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <vector>
 
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 
@@ -82,6 +84,16 @@ std::vector<svm_node> dense_nodes(const Eigen::MatrixXd& inputs) {
   return nodes;
 }
 
+// libsvm takes gamma = 1/(2 sigma^2): a sigma whose gamma is 0 or not a
+// normal number would train a constant.
+void check_ranges(const SvrHyperparameters& h, const std::string& where) {
+  // C <= 0 and epsilon < 0 are left to libsvm's own check (its message is passed on).
+  if (!(h.sigma > 0.0) || !std::isnormal(h.gamma()) || !std::isfinite(h.C) || !std::isfinite(h.epsilon))
+    throw InputError(where + ": sigma = " + number_text(h.sigma) +
+                     " is out of range; give a finite sigma > 0 whose 1/(2 sigma^2) is a normal number "
+                     "(and a finite C and epsilon)");
+}
+
 // A libsvm problem over dense rows, with its parameters checked (by us for
 // the ranges, then by libsvm's svm_check_parameter, whose message is passed on).
 struct LibsvmProblem {
@@ -97,16 +109,14 @@ struct LibsvmProblem {
     if (inputs.rows() == 0 || inputs.rows() != targets.size())
       throw InputError(where + ": " + std::to_string(inputs.rows()) + " input rows and " +
                        std::to_string(targets.size()) + " targets; give as many of each, at least one");
-    if (!(h.sigma > 0.0) || !(h.C > 0.0) || !(h.epsilon >= 0.0))
-      throw InputError(where + ": give C > 0, sigma > 0 and epsilon >= 0 (got C " + std::to_string(h.C) +
-                       ", sigma " + std::to_string(h.sigma) + ", epsilon " + std::to_string(h.epsilon) +
-                       ")");
+    check_ranges(h, where);
     silence_libsvm();
     for (Eigen::Index r = 0; r < inputs.rows(); ++r) rows.push_back(nodes.data() + r * (inputs.cols() + 1));
     problem = {static_cast<int>(rows.size()), y.data(), rows.data()};
     param = parameters(h);
     if (const char* message = svm_check_parameter(&problem, &param))
-      throw InputError(where + ": libsvm: " + message);
+      throw InputError(where + ": libsvm rejects the hyperparameters: " + std::string(message) +
+                       " (epsilon is libsvm's p; give C > 0, epsilon >= 0, sigma > 0)");
   }
 };
 
@@ -123,6 +133,10 @@ Eigen::VectorXd SvrRegressor::libsvm_cross_validation(const Eigen::MatrixXd& inp
   std::srand(seed);
   svm_cross_validation(&problem.problem, &problem.param, folds, predicted.data());
   return predicted;
+}
+
+void SvrRegressor::check(const SvrHyperparameters& h, const std::string& where) {
+  LibsvmProblem(Eigen::MatrixXd::Zero(1, 1), Eigen::VectorXd::Zero(1), h, where);
 }
 
 SvrRegressor SvrRegressor::train(const Eigen::MatrixXd& inputs, const Eigen::VectorXd& targets,

@@ -6,6 +6,7 @@
 // trained model and one loaded from JSON predict through the same code
 // (libsvm's svm_predict) with the same numbers, bit for bit.
 #include <Eigen/Core>
+#include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -17,6 +18,11 @@ struct SvrHyperparameters {
   double C = 1.0;         // box constraint
   double sigma = 1.0;     // RBF width
   double gamma() const { return 1.0 / (2.0 * sigma * sigma); }
+  // From (log10 epsilon, log10 C, log10 sigma): the svr_hyperparameters
+  // problem's decision variables.
+  static SvrHyperparameters from_log10(double epsilon, double C, double sigma) {
+    return {std::pow(10.0, epsilon), std::pow(10.0, C), std::pow(10.0, sigma)};
+  }
 };
 
 class SvrRegressor {
@@ -24,6 +30,9 @@ class SvrRegressor {
   // Trains on the rows of `inputs` (one sample per row) and `targets`.
   // Throws InputError naming `where` with libsvm's own message when a
   // hyperparameter is invalid, and when the data are empty or mismatched.
+  // The checks train() makes of `h` alone (ours, then libsvm's
+  // svm_check_parameter), for validating an experiment before any work.
+  static void check(const SvrHyperparameters& h, const std::string& where);
   static SvrRegressor train(const Eigen::MatrixXd& inputs, const Eigen::VectorXd& targets,
                             const SvrHyperparameters& h, const std::string& where);
 

@@ -74,6 +74,29 @@ void add_sweep(SignalBuilder& ex, const SegmentReader& s) {
   }
 }
 
+// The sum of equal sines divided by their count, so `amplitude` bounds the
+// excursion from `offset` (seed 002's compound test signals).
+void add_multisine(SignalBuilder& ex, const SegmentReader& s) {
+  require_known_keys(s.j, {"type", "frequencies", "amplitude", "offset", "phase_deg", "duration", "label"}, s.where);
+  std::vector<double> f;
+  if (s.j.contains("frequencies") && s.j["frequencies"].is_array())
+    for (const auto& v : s.j["frequencies"])
+      if (v.is_number() && v.get<double>() > 0) f.push_back(v.get<double>());
+  if (f.empty() || f.size() != s.j["frequencies"].size())
+    throw InputError(s.where + ".frequencies: expected a non-empty list of positive frequencies in Hz");
+  const double a = s.number("amplitude") / double(f.size()), off = s.number("offset", 0.0);
+  const double phase = s.number("phase_deg", 0.0) * std::numbers::pi / 180.0;
+  std::string name;
+  for (double fi : f) name += (name.empty() ? "" : "/") + hz(fi);
+  const std::string label = s.label("multisine_" + name + "Hz");
+  const long n = samples(s.positive("duration"), ex.sample_rate);
+  for (long k = 0; k < n; ++k) {
+    double sum = 0.0;
+    for (double fi : f) sum += std::sin(kTwoPi * fi * k / ex.sample_rate + phase);
+    append(ex, off + a * sum, label);
+  }
+}
+
 void add_steps(SignalBuilder& ex, const SegmentReader& s) {
   require_known_keys(s.j, {"type", "levels", "hold", "ramp", "label"}, s.where);
   if (!s.j.contains("levels") || !s.j["levels"].is_array() || s.j["levels"].empty())
@@ -104,8 +127,9 @@ Excitation make_excitation(const nlohmann::json& spec) {
     const std::string type = seg.is_object() ? seg.value("type", "") : "";
     if (type == "sine") add_sine(ex, reader);
     else if (type == "sweep") add_sweep(ex, reader);
+    else if (type == "multisine") add_multisine(ex, reader);
     else if (type == "steps") add_steps(ex, reader);
-    else throw InputError(reader.where + ".type: expected \"sine\", \"sweep\" or \"steps\"");
+    else throw InputError(reader.where + ".type: expected \"sine\", \"sweep\", \"multisine\" or \"steps\"");
   }
   Excitation out{ex.sample_rate, Eigen::VectorXd(ex.u.size()),
                  Eigen::Map<const Eigen::VectorXd>(ex.u.data(), ex.u.size()), std::move(ex.segment)};

@@ -1,12 +1,12 @@
 #include "problems/svr/svr_hyperparameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
-#include "framework/io/data_path.hpp"
-#include "framework/io/measurement.hpp"
+#include "framework/svr/svr_record.hpp"
 #include "framework/svr/svr_validation.hpp"
 
 namespace hystbench {
@@ -14,8 +14,8 @@ namespace {
 
 const std::vector<std::string>& problem_keys() {
   static const std::vector<std::string> keys = {
-      "type",    "data",          "columns", "lags",        "fitness",  "folds", "holdout",
-      "cv_seed", "max_rows",      "log10_epsilon", "log10_C", "log10_sigma"};
+      "type",    "data",     "segment",       "columns", "lags",       "fitness", "folds",
+      "holdout", "cv_seed",  "max_rows",      "log10_epsilon", "log10_C", "log10_sigma"};
   return keys;
 }
 
@@ -35,20 +35,6 @@ void bound(const nlohmann::json& spec, const std::string& key, double lo, double
   b.lower[i] = lo;
   b.upper[i] = hi;
   b.names.push_back(key);
-}
-
-// Every k-th row, so that at most `most` remain, spread over the record.
-void decimate(Eigen::MatrixXd& rows, Eigen::VectorXd& targets, Eigen::Index most) {
-  if (rows.rows() <= most) return;
-  const Eigen::Index step = (rows.rows() + most - 1) / most, kept = (rows.rows() + step - 1) / step;
-  Eigen::MatrixXd r(kept, rows.cols());
-  Eigen::VectorXd t(kept);
-  for (Eigen::Index i = 0; i < kept; ++i) {
-    r.row(i) = rows.row(i * step);
-    t[i] = targets[i * step];
-  }
-  rows = std::move(r);
-  targets = std::move(t);
 }
 
 double mean_squared(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
@@ -72,13 +58,14 @@ SvrHyperparameterProblem::SvrHyperparameterProblem(const nlohmann::json& spec,
   require_known_keys(spec, problem_keys(), "problem");
   if (!spec.contains("data") || !spec["data"].is_string())
     throw InputError("problem.data: give the training record (CSV with t, u, y), e.g. the 1 Hz record");
-  const auto path = resolve_data_path(spec["data"].get<std::string>(), base_dir, "problem.data");
   const ColumnMap columns = spec.contains("columns") ? ColumnMap::from_json(spec["columns"], "problem.columns")
                                                      : ColumnMap{};
-  const Measurement m = read_measurement(path, columns);
-  data_name_ = path.filename().string();
-  x_ = m.u;
-  y_ = m.y;
+  const SvrRecord record = read_svr_record(spec["data"].get<std::string>(),
+                                           optional_text(spec, "segment", "", "problem"), columns, base_dir,
+                                           "problem");
+  data_name_ = record.name;
+  x_ = record.data.u;
+  y_ = record.data.y;
   const nlohmann::json lags = spec.value("lags", nlohmann::json::object());
   lags_ = {int(optional_number(lags, "m", 4, 0, 50, "problem.lags")),
            int(optional_number(lags, "n", 4, 0, 50, "problem.lags"))};
@@ -91,21 +78,19 @@ SvrHyperparameterProblem::SvrHyperparameterProblem(const nlohmann::json& spec,
   holdout_ = optional_number(spec, "holdout", 0.25, 0.05, 0.9, "problem");
   cv_seed_ = unsigned(optional_number(spec, "cv_seed", 1, 0, 4294967295.0, "problem"));
   if (y_.size() < lags_.warmup() + 2 * folds_)
-    throw InputError(path.string() + ": " + std::to_string(y_.size()) + " samples are too few for lags m = " +
+    throw InputError(data_name_ + ": " + std::to_string(y_.size()) + " samples are too few for lags m = " +
                      std::to_string(lags_.m) + ", n = " + std::to_string(lags_.n) + " and " +
                      std::to_string(folds_) + " folds");
   SvrHammerstein::regression_rows(x_, y_, lags_, rows_, targets_);
-  decimate(rows_, targets_, Eigen::Index(optional_number(spec, "max_rows", 2000, 10, 1e7, "problem")));
-  bound(spec, "log10_epsilon", -4, -1, bounds_);
-  bound(spec, "log10_C", -1, 7, bounds_);
-  bound(spec, "log10_sigma", -2, 4, bounds_);
+  max_rows_ = Eigen::Index(optional_number(spec, "max_rows", 1000, 10, 1e7, "problem"));
+  SvrHammerstein::decimate(rows_, targets_, max_rows_);
+  // Where libsvm answers in about a second at most (docs/svr.md#hyperparameters).
+  bound(spec, "log10_epsilon", -3, -1, bounds_);
+  bound(spec, "log10_C", -1, 3, bounds_);
+  bound(spec, "log10_sigma", 1, 3, bounds_);
 }
 
 std::string SvrHyperparameterProblem::name() const { return "svr_hyperparameters(" + data_name_ + ")"; }
-
-SvrHyperparameters SvrHyperparameterProblem::hyperparameters_of(const Eigen::Ref<const Eigen::VectorXd>& x) {
-  return {std::pow(10.0, x[0]), std::pow(10.0, x[1]), std::pow(10.0, x[2])};
-}
 
 double SvrHyperparameterProblem::blocked_cv(const SvrHyperparameters& h) const {
   return blocked_cv_error(rows_, targets_, h, folds_);
@@ -118,7 +103,7 @@ double SvrHyperparameterProblem::libsvm_cv(const SvrHyperparameters& h) const {
 
 double SvrHyperparameterProblem::freerun_holdout(const SvrHyperparameters& h) const {
   const Eigen::Index cut = Eigen::Index(double(y_.size()) * (1.0 - holdout_));
-  const SvrHammerstein model = SvrHammerstein::fit_stage1(x_.head(cut), y_.head(cut), lags_, h, "problem");
+  const SvrHammerstein model = SvrHammerstein::fit_stage1(x_.head(cut), y_.head(cut), lags_, h, "problem", max_rows_);
   // The held-out part in free run, started from its own first samples.
   const Eigen::VectorXd x = x_.tail(y_.size() - cut), y = y_.tail(y_.size() - cut);
   const double range = y_.maxCoeff() - y_.minCoeff();
@@ -136,7 +121,14 @@ double SvrHyperparameterProblem::fitness(const SvrHyperparameters& h) const {
 
 void SvrHyperparameterProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                                         Eigen::Ref<Eigen::VectorXd> f) const {
-  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(hyperparameters_of(X.col(i)));
+  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(SvrHyperparameters::from_log10(X(0, i), X(1, i), X(2, i)));
+}
+
+void SvrHyperparameterProblem::evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X,
+                                             Eigen::Ref<Eigen::VectorXd> f,
+                                             const EvaluationOptions& options) const {
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(1, options.threads))
+  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(SvrHyperparameters::from_log10(X(0, i), X(1, i), X(2, i)));
 }
 
 nlohmann::json SvrHyperparameterProblem::describe() const {
