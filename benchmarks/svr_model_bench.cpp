@@ -56,9 +56,10 @@ void BM_SvrFreeRun(benchmark::State& state) {
 }
 BENCHMARK(BM_SvrFreeRun)->Unit(benchmark::kMillisecond);
 
-// The bundled experiment's search on its 1 Hz training record, made here
-// from the same actuator, excitation, noise and seed as
-// benchmarks/svr_piezo.sh makes it; argument: the rows the search uses.
+// The bundled experiment's search on a 1 Hz record made here from the
+// actuator, excitation, noise level and seed benchmarks/svr_piezo.sh uses
+// (the 1 Hz part alone, so its noise differs in detail from the script's
+// record); argument: the rows the search uses.
 void BM_SvrPsoSearch(benchmark::State& state) {
   namespace fs = std::filesystem;
   const fs::path source(HYSTBENCH_SOURCE_DIR), spec = source / "benchmarks/experiments/svr_piezo";

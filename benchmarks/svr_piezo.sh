@@ -14,7 +14,7 @@ out=${1:-results/svr}
 hystbench=${HYSTBENCH:-build/hystbench}
 spec=benchmarks/experiments/svr_piezo
 experiment=benchmarks/experiments/svr_piezo.json
-mkdir -p "$out/data"
+mkdir -p "$out/data" "$out/greybox"
 # The experiment names its files under results/svr; elsewhere, a copy names $out.
 if [[ "$out" != results/svr ]]; then
   sed "s#results/svr/#$out/#g" "$experiment" > "$out/svr_piezo.json"

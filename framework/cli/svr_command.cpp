@@ -28,7 +28,9 @@ void print_summary(const SvrExperiment& x, const SvrResults& r) {
   std::cout << "hyperparameters: epsilon " << format_number("%.4g", h.epsilon) << ", C "
             << format_number("%.4g", h.C) << ", sigma " << format_number("%.4g", h.sigma) << " (gamma "
             << format_number("%.4g", h.gamma()) << "), " << r.model.regressor().support_vectors()
-            << " support vectors; ARX orders p = " << r.arx.best.p << ", q = " << r.arx.best.q << " by AIC\n";
+            << " support vectors";
+  if (x.stage2) std::cout << "; ARX orders p = " << r.arx.best.p << ", q = " << r.arx.best.q << " by AIC";
+  std::cout << "\n";
   for (const SvrTestRow& row : r.rows) {
     std::cout << "  " << row.signal->label << ": SVR RMSE " << quantity(row.svr.rmse, x.y_unit) << ", RE "
               << format_number("%.2f", 100 * row.svr.re) << " %";

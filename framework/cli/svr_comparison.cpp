@@ -1,8 +1,11 @@
 #include "framework/cli/svr_comparison.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include "framework/cli/fit_summary.hpp"
+#include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 #include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/svr/svr_model.hpp"
@@ -14,6 +17,11 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   const SvrHammerstein model = SvrHammerstein::from_json(file, path);
   DataSource source = data.source();
   const Measurement m = source.load();
+  const double trained = file.value("sample_time", 0.0);
+  if (trained > 0.0 && std::abs(m.sample_time - trained) > 1e-6 * trained)
+    throw InputError(data.data + " is sampled every " + number_text(m.sample_time) + " s but " + path +
+                     " was trained on samples every " + number_text(trained) +
+                     " s; the model's lags are in samples, so resample the data to its rate");
   HoldoutSpec holdout;
   holdout.mode = HoldoutSpec::Mode::None;
   if (cmd.count("--holdout")) holdout = data.holdout_spec();

@@ -9,6 +9,7 @@
 #include "framework/discovery/segment_runs.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/io/json_file.hpp"
+#include "framework/report/table_format.hpp"
 
 namespace hystbench {
 namespace {
@@ -77,6 +78,11 @@ void read_tests(const nlohmann::json& j, const ColumnMap& columns, SvrExperiment
       const std::string label = run.label.empty() ? r.name : run.label;
       require_samples(run.size(), x.lags.warmup() + 2 + Eigen::Index(std::ceil(x.discard * double(run.size()))),
                       "test signal \"" + label + "\" of " + r.name, at);
+      // The label names the table row and the figure files: one signal each.
+      for (const SvrTestSignal& other : x.signals)
+        if (table::label_key(other.label) == table::label_key(label))
+          throw InputError(at + ": the test signals \"" + other.label + "\" and \"" + label +
+                           "\" would share a table row and figure files; give each its own label");
       x.signals.push_back({label, i, run.begin, run.end});
     }
   }
@@ -110,9 +116,11 @@ SvrExperiment SvrExperiment::from_json(const nlohmann::json& j, const std::files
   x.name = optional_text(j, "name", "svr", where);
   x.description = optional_text(j, "description", "", where);
   const nlohmann::json lags = j.value("lags", nlohmann::json::object());
+  require_known_keys(lags, {"m", "n"}, where + ".lags");
   x.lags = {int(optional_number(lags, "m", 4, 0, 50, where + ".lags")),
             int(optional_number(lags, "n", 4, 0, 50, where + ".lags"))};
   const nlohmann::json arx = j.value("arx", nlohmann::json::object());
+  require_known_keys(arx, {"p_max", "q_max"}, where + ".arx");
   x.p_max = int(optional_number(arx, "p_max", 5, 1, 20, where + ".arx"));
   x.q_max = int(optional_number(arx, "q_max", 5, 1, 20, where + ".arx"));
   x.discard = optional_number(j, "discard", 0.2, 0.0, 0.9, where);
@@ -137,7 +145,11 @@ SvrExperiment SvrExperiment::from_json(const nlohmann::json& j, const std::files
   if (j.contains("hyperparameters")) x.fixed = fixed_hyperparameters(j["hyperparameters"], where + ".hyperparameters");
   x.search = search_experiment(j.value("search", nlohmann::json::object()), x, where + ".search");
   x.search.base_dir = base_dir;
-  x.search_problem = make_problem(x.search.problem, base_dir);  // reads and checks stage 1
+  try {
+    x.search_problem = make_problem(x.search.problem, base_dir);  // reads and checks stage 1
+  } catch (const InputError& e) {  // its messages say "problem.KEY"
+    throw InputError(where + ".search." + e.what());
+  }
   if (j.contains("greybox")) {
     if (!j["greybox"].is_string()) throw InputError(where + ".greybox: give the path of a fit.json");
     x.greybox_path = j["greybox"].get<std::string>();

@@ -132,6 +132,8 @@ SvrHammerstein SvrHammerstein::from_json(const nlohmann::json& j, const std::str
     if (j.value("model", "") != "svr_hammerstein")
       throw InputError(where + ".model: not \"svr_hammerstein\"; this is not an SVR model file");
     const SvrLags lags{j.at("lags").at("m").get<int>(), j.at("lags").at("n").get<int>()};
+    if (lags.m < 0 || lags.n < 0 || lags.m > 50 || lags.n > 50)
+      throw InputError(where + ".lags: m and n must be from 0 to 50");
     const MinMaxScale xs{j.at("input_scale").at("min").get<double>(), j.at("input_scale").at("max").get<double>()};
     const MinMaxScale ys{j.at("output_scale").at("min").get<double>(),
                          j.at("output_scale").at("max").get<double>()};

@@ -88,10 +88,12 @@ std::vector<svm_node> dense_nodes(const Eigen::MatrixXd& inputs) {
 // normal number would train a constant.
 void check_ranges(const SvrHyperparameters& h, const std::string& where) {
   // C <= 0 and epsilon < 0 are left to libsvm's own check (its message is passed on).
-  if (!(h.sigma > 0.0) || !std::isnormal(h.gamma()) || !std::isfinite(h.C) || !std::isfinite(h.epsilon))
+  if (!std::isfinite(h.C) || !std::isfinite(h.epsilon))
+    throw InputError(where + ": C = " + number_text(h.C) + ", epsilon = " + number_text(h.epsilon) +
+                     ": give finite values");
+  if (!(h.sigma > 0.0) || !std::isnormal(h.gamma()))
     throw InputError(where + ": sigma = " + number_text(h.sigma) +
-                     " is out of range; give a finite sigma > 0 whose 1/(2 sigma^2) is a normal number "
-                     "(and a finite C and epsilon)");
+                     " is out of range; give a finite sigma > 0 whose 1/(2 sigma^2) is a normal number");
 }
 
 // A libsvm problem over dense rows, with its parameters checked (by us for

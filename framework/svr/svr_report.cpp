@@ -91,6 +91,13 @@ std::string table_csv(const SvrExperiment& x, const SvrResults& r) {
   return out;
 }
 
+// The model, and the sampling time its lags count in (compare checks it).
+nlohmann::json model_file(const SvrExperiment& x, const SvrResults& r) {
+  nlohmann::json j = r.model.to_json();
+  j["sample_time"] = x.stage1.data.sample_time;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json svr_json(const SvrExperiment& x, const SvrResults& r, int threads) {
@@ -126,7 +133,7 @@ nlohmann::json svr_json(const SvrExperiment& x, const SvrResults& r, int threads
 std::vector<std::filesystem::path> write_svr_report(const std::filesystem::path& dir, const SvrExperiment& x,
                                                     const SvrResults& r, int threads) {
   std::vector<std::pair<std::string, std::string>> files = {
-      {"svr_model.json", r.model.to_json().dump(2) + "\n"},
+      {"svr_model.json", model_file(x, r).dump(2) + "\n"},
       {"table.md", table::markdown(make_table(x, r, Format::Markdown))},
       {"table.tex", table::latex(make_table(x, r, Format::Latex))},
       {"table.csv", table_csv(x, r)},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 
 #include "framework/core/error.hpp"
@@ -88,6 +89,11 @@ SvrHyperparameterProblem::SvrHyperparameterProblem(const nlohmann::json& spec,
   bound(spec, "log10_epsilon", -3, -1, bounds_);
   bound(spec, "log10_C", -1, 3, bounds_);
   bound(spec, "log10_sigma", 1, 3, bounds_);
+  // Every corner of the box must be a valid SVR, checked before any search.
+  for (int corner = 0; corner < 8; ++corner) {
+    auto at = [&](int i) { return (corner >> i) & 1 ? bounds_.upper[i] : bounds_.lower[i]; };
+    SvrRegressor::check(SvrHyperparameters::from_log10(at(0), at(1), at(2)), "problem (the box's corner)");
+  }
 }
 
 std::string SvrHyperparameterProblem::name() const { return "svr_hyperparameters(" + data_name_ + ")"; }
@@ -127,8 +133,19 @@ void SvrHyperparameterProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>&
 void SvrHyperparameterProblem::evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X,
                                              Eigen::Ref<Eigen::VectorXd> f,
                                              const EvaluationOptions& options) const {
+  // An exception may not leave an OpenMP region: the first is kept and
+  // rethrown after it, as the serial loop would have thrown it.
+  std::exception_ptr error;
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, options.threads))
-  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(SvrHyperparameters::from_log10(X(0, i), X(1, i), X(2, i)));
+  for (Eigen::Index i = 0; i < X.cols(); ++i) {
+    try {
+      f[i] = fitness(SvrHyperparameters::from_log10(X(0, i), X(1, i), X(2, i)));
+    } catch (...) {
+#pragma omp critical(svr_hyperparameters_error)
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
 }
 
 nlohmann::json SvrHyperparameterProblem::describe() const {

@@ -1,0 +1,25 @@
+# loop_test_multisine.csv.gp: hysteresis loop at test_multisine.csv: measured and modelled output against the input
+#
+# Reads loop_test_multisine.csv.csv.
+# To re-render after editing, run inside this folder:
+#     gnuplot loop_test_multisine.csv.gp
+# It writes loop_test_multisine.csv.svg, loop_test_multisine.csv.png and loop_test_multisine.csv.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set datafile separator ","
+set key top left
+set grid
+set title "test_multisine.csv" noenhanced
+set xlabel "input (N)" noenhanced
+set ylabel "output (m)" noenhanced
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "loop_test_multisine.csv.".ext
+  plot "loop_test_multisine.csv.csv" using 1:2 with lines lw 2 lc rgb "black" title "measured", \
+       "loop_test_multisine.csv.csv" using 1:3 with lines lw 1.5 dt 2 lc rgb "#d62728" title "SVR"
+}
+unset output
