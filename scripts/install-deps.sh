@@ -15,9 +15,10 @@ case "${1:-}" in
   fuzz) packages+=(clang libclang-rt-14-dev) ;;
   tsan) packages+=(clang libclang-rt-14-dev libomp-14-dev) ;;
 esac
-# Only the peer comparison with pagmo2 (benchmarks/peer) needs these; the
-# build skips it where they are missing, so failing to get them stops nothing.
-optional=(libpagmo-dev)
+# Only the peer comparison with pagmo2 (benchmarks/peer) and robust control
+# (framework/robust/, SLICOT: GPL-2+, see the README) need these; the build
+# skips what is missing, so failing to get them stops nothing.
+optional=(libpagmo-dev libslicot-dev liblapack-dev)
 
 missing_of() {
   for p in "$@"; do
@@ -34,7 +35,7 @@ fi
 
 if [[ $(id -u) -ne 0 ]]; then
   if [[ ${#missing[@]} -eq 0 ]]; then
-    echo "Optional, for the peer comparison with pagmo2: sudo apt-get install -y ${missing_optional[*]}" >&2
+    echo "Optional, for the peer comparison with pagmo2 and robust control: sudo apt-get install -y ${missing_optional[*]}" >&2
     exit 0
   fi
   echo "hystbench needs these Debian packages: ${missing[*]}" >&2
@@ -52,6 +53,6 @@ fi
 if [[ ${#missing_optional[@]} -gt 0 ]]; then
   echo "Installing optional packages: ${missing_optional[*]}"
   apt-get install -y -qq --no-install-recommends "${missing_optional[@]}" >/dev/null ||
-    echo "Could not install ${missing_optional[*]}: the peer comparison with pagmo2 will not be built." >&2
+    echo "Could not install ${missing_optional[*]}: the peer comparison with pagmo2 or robust control will not be built." >&2
 fi
 echo "Packages installed."

@@ -1,0 +1,64 @@
+#include "framework/robust/hinf_norm.hpp"
+
+#include <algorithm>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "framework/core/error.hpp"
+#include "framework/robust/slicot_error.hpp"
+
+extern "C" void ab13dd_(const char* dico, const char* jobe, const char* equil, const char* jobd, const int* n,
+                        const int* m, const int* p, double* fpeak, const double* a, const int* lda,
+                        const double* e, const int* lde, const double* b, const int* ldb, const double* c,
+                        const int* ldc, const double* d, const int* ldd, double* gpeak, const double* tol,
+                        int* iwork, double* dwork, const int* ldwork, std::complex<double>* cwork,
+                        const int* lcwork, int* info, std::size_t, std::size_t, std::size_t, std::size_t);
+
+namespace hystbench::robust {
+namespace {
+
+// The header's simple upper bound on the real workspace.
+int real_workspace(int n, int m, int p) {
+  return std::max(1, 15 * n * n + p * p + m * m + (6 * n + 3) * (p + m) + 4 * p * m + n * m + 22 * n +
+                         7 * std::min(p, m));
+}
+
+std::string reason(int info) {
+  switch (info) {
+    case 1: return "the descriptor matrix is singular";
+    case 2: return "the eigenvalue algorithm did not converge";
+    case 3: return "the singular value decomposition did not converge";
+    case 4: return "the tolerance is too small for the algorithm to converge";
+    default: return "INFO = " + std::to_string(info);
+  }
+}
+
+double decode(const double* v) {  // [value, 1], or [.., 0] for infinity
+  return v[1] == 0.0 ? std::numeric_limits<double>::infinity() : v[0];
+}
+
+}  // namespace
+
+HinfNorm hinf_norm(const StateSpace& s, TimeDomain domain, double tolerance) {
+  if (!s.consistent()) throw InputError("hinf_norm: the system's matrices have inconsistent sizes");
+  const int n = int(s.states()), m = int(s.inputs()), p = int(s.outputs());
+  const int ld_n = std::max(1, n), ld_p = std::max(1, p), one = 1;
+  const double e = 0.0;
+  double fpeak[2] = {0.0, 1.0}, gpeak[2] = {0.0, 1.0};
+  std::vector<int> iwork(std::max(1, n));
+  const int ldwork = real_workspace(n, m, p), lcwork = std::max(1, (n + m) * (n + p) + 2 * std::min(p, m) + std::max(p, m));
+  std::vector<double> dwork(ldwork);
+  std::vector<std::complex<double>> cwork(lcwork);
+  const char dico = domain == TimeDomain::Continuous ? 'C' : 'D';
+  int info = 0;
+  ab13dd_(&dico, "I", "S", "D", &n, &m, &p, fpeak, s.A.data(), &ld_n, &e, &one, s.B.data(), &ld_n, s.C.data(),
+          &ld_p, s.D.data(), &ld_p, gpeak, &tolerance, iwork.data(), dwork.data(), &ldwork, cwork.data(), &lcwork,
+          &info, 1, 1, 1, 1);
+  if (info < 0) throw InputError("hinf_norm: " + take_argument_error("AB13DD", info));
+  if (info > 0) throw InputError("hinf_norm: AB13DD failed: " + reason(info));
+  return {decode(gpeak), decode(fpeak)};
+}
+
+}  // namespace hystbench::robust

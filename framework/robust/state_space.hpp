@@ -1,0 +1,23 @@
+#pragma once
+// A linear time-invariant system in state-space form, x' = A x + B u,
+// y = C x + D u (continuous) or x(k+1) = A x(k) + B u(k), y = C x + D u
+// (discrete), the type every robust-control routine here takes and returns.
+// Matrices are Eigen's (column-major, as Fortran expects them).
+#include <Eigen/Core>
+
+namespace hystbench::robust {
+
+struct StateSpace {
+  Eigen::MatrixXd A, B, C, D;
+
+  Eigen::Index states() const { return A.rows(); }
+  Eigen::Index inputs() const { return B.cols(); }
+  Eigen::Index outputs() const { return C.rows(); }
+  // Whether the sizes agree: A n×n, B n×m, C p×n, D p×m.
+  bool consistent() const {
+    return A.rows() == A.cols() && B.rows() == A.rows() && C.cols() == A.rows() && D.rows() == C.rows() &&
+           D.cols() == B.cols();
+  }
+};
+
+}  // namespace hystbench::robust
