@@ -20,4 +20,16 @@ struct StateSpace {
   }
 };
 
+// a − b for systems of the same inputs and outputs: the states side by side.
+inline StateSpace difference(const StateSpace& a, const StateSpace& b) {
+  const Eigen::Index na = a.states(), nb = b.states();
+  StateSpace d{Eigen::MatrixXd::Zero(na + nb, na + nb), Eigen::MatrixXd(na + nb, a.inputs()),
+               Eigen::MatrixXd(a.outputs(), na + nb), a.D - b.D};
+  d.A.topLeftCorner(na, na) = a.A;
+  d.A.bottomRightCorner(nb, nb) = b.A;
+  d.B << a.B, b.B;
+  d.C << a.C, -b.C;
+  return d;
+}
+
 }  // namespace hystbench::robust

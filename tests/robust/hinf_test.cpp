@@ -11,28 +11,14 @@
 #include "framework/core/error.hpp"
 #include "framework/robust/hinf_norm.hpp"
 #include "framework/robust/hinf_synthesis.hpp"
+#include "tests/robust/slicot_examples.hpp"
 
 namespace hystbench::robust {
 namespace {
 
-Eigen::MatrixXd rows(int r, int c, std::initializer_list<double> v) {
-  Eigen::MatrixXd m(r, c);
-  auto it = v.begin();
-  for (int i = 0; i < r; ++i)
-    for (int j = 0; j < c; ++j) m(i, j) = *it++;
-  return m;
-}
+using examples::rows;
+StateSpace sb10fd_example() { return examples::sb10fd_plant(); }
 
-// SLICOT's SB10FD documentation example: w, u = 3 + 2 inputs, z, y = 3 + 2 outputs.
-StateSpace sb10fd_example() {
-  return {rows(6, 6, {-1, 0, 4, 5, -3, -2, -2, 4, -7, -2, 0, 3, -6, 9, -5, 0, 2, -1,
-                      -8, 4, 7, -1, -3, 0, 2, 5, 8, -9, 1, -4, 3, -5, 8, 0, 2, -6}),
-          rows(6, 5, {-3, -4, -2, 1, 0, 2, 0, 1, -5, 2, -5, -7, 0, 7, -2,
-                      4, -6, 1, 1, -2, -3, 9, -8, 0, 5, 1, -2, 3, -6, -2}),
-          rows(5, 6, {1, -1, 2, -4, 0, -3, -3, 0, 5, -1, 1, 1, -7, 5, 0, -8, 2, -2,
-                      9, -3, 4, 0, 3, 7, 0, 1, -2, 1, -6, -2}),
-          rows(5, 5, {1, -2, -3, 0, 0, 0, 4, 0, 1, 0, 5, -3, -4, 0, 1, 0, 1, 0, 1, -3, 0, 0, 1, 7, 1})};
-}
 
 double max_real_pole(const Eigen::MatrixXd& A) { return Eigen::EigenSolver<Eigen::MatrixXd>(A).eigenvalues().real().maxCoeff(); }
 
