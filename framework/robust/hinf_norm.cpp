@@ -1,5 +1,6 @@
 #include "framework/robust/hinf_norm.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <complex>
 #include <cstddef>
@@ -35,6 +36,12 @@ std::string reason(int info) {
   }
 }
 
+bool stable(const Eigen::MatrixXd& A, TimeDomain domain) {
+  if (A.rows() == 0) return true;
+  const Eigen::VectorXcd poles = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
+  return domain == TimeDomain::Continuous ? poles.real().maxCoeff() < 0.0 : poles.cwiseAbs().maxCoeff() < 1.0;
+}
+
 double decode(const double* v) {  // [value, 1], or [.., 0] for infinity
   return v[1] == 0.0 ? std::numeric_limits<double>::infinity() : v[0];
 }
@@ -43,6 +50,9 @@ double decode(const double* v) {  // [value, 1], or [.., 0] for infinity
 
 HinfNorm hinf_norm(const StateSpace& s, TimeDomain domain, double tolerance) {
   if (!s.consistent()) throw InputError("hinf_norm: the system's matrices have inconsistent sizes");
+  // AB13DD computes the L∞ norm, finite for an unstable system too.
+  if (!stable(s.A, domain))
+    return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
   const int n = int(s.states()), m = int(s.inputs()), p = int(s.outputs());
   const int ld_n = std::max(1, n), ld_p = std::max(1, p), one = 1;
   const double e = 0.0;

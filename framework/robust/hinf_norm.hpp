@@ -1,5 +1,5 @@
 #pragma once
-// The H∞ norm of a stable system, the peak gain of its frequency response,
+// The H∞ norm of a system (+inf when it is unstable), the peak gain of its frequency response,
 // by SLICOT's AB13DD (Bruinsma–Steinbuch). Continuous systems peak over
 // s = jω, discrete ones over z = e^{jθ} (θ in radians per sample).
 #include "framework/robust/state_space.hpp"
@@ -9,7 +9,7 @@ namespace hystbench::robust {
 enum class TimeDomain { Continuous, Discrete };
 
 struct HinfNorm {
-  double norm = 0.0;       // +inf for an unbounded gain (a pole on the axis or circle)
+  double norm = 0.0;       // +inf for an unstable system or a pole on the axis or circle
   double frequency = 0.0;  // where it peaks: rad/s, or rad/sample; +inf at infinite frequency
 };
 

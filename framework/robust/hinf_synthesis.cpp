@@ -1,12 +1,15 @@
 #include "framework/robust/hinf_synthesis.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
+#include <complex>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 #include "framework/robust/slicot_error.hpp"
 
 extern "C" void sb10ad_(const int* job, const int* n, const int* m, const int* np, const int* ncon,
@@ -63,12 +66,32 @@ std::string reason(int info) {
     case 9: return "det(I + Tu D11 Ty D22) = 0";
     case 10: return "the singular values of the D11 blocks could not be estimated";
     case 11: return "I - D22 DK is singular: the loop is not well posed";
-    case 12: return "no stabilizing controller exists below gamma_max";
+    case 12: return "no stabilizing controller was found";
     default: return "INFO = " + std::to_string(info);
   }
 }
 
-[[noreturn]] void fail(int info) { throw InputError("hinf_synthesis: SB10AD: " + reason(info)); }
+// `where`: the γ the call was made at, for the messages that depend on it.
+[[noreturn]] void fail(int info, const std::string& where = "") {
+  throw InputError("hinf_synthesis: SB10AD: " + reason(info) + where);
+}
+
+// The unstable modes (Re λ >= 0) that [A − λI, B] (or [A − λI; C]
+// transposed) cannot reach: the PBH test of stabilizability (detectability).
+std::string unreachable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  const Eigen::VectorXcd poles = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
+  const Eigen::Index n = A.rows();
+  for (const std::complex<double>& pole : poles) {
+    if (pole.real() < 0.0) continue;
+    Eigen::MatrixXcd pbh(n, n + B.cols());
+    pbh << A.cast<std::complex<double>>() - pole * Eigen::MatrixXcd::Identity(n, n), B.cast<std::complex<double>>();
+    Eigen::JacobiSVD<Eigen::MatrixXcd> svd(pbh);
+    svd.setThreshold(1e3 * std::numeric_limits<double>::epsilon());
+    if (svd.rank() < n)
+      return std::to_string(pole.real()) + (pole.imag() != 0.0 ? " ± " + std::to_string(std::abs(pole.imag())) + "i" : "");
+  }
+  return "";
+}
 
 // Numerical rank at SB10AD's tolerance, sqrt(eps) relative to the largest singular value.
 Eigen::Index full_rank(const Eigen::MatrixXd& m) {
@@ -86,12 +109,21 @@ void check(const StateSpace& p, const Sizes& s) {
                      ", " + std::to_string(s.np1()) + ", " + std::to_string(s.nmeas) + ")");
   if (s.ncon > s.np1() || s.nmeas > s.m1())
     throw InputError("hinf_synthesis: SB10AD needs ncon <= performance outputs and nmeas <= disturbances");
-  // SB10AD's own rank test runs inside its gamma loop, which then reports
-  // only that no controller was found: the ranks are checked first, with
-  // its tolerance.
+  // A zero D12 came back from SB10AD's search as "no stabilizing
+  // controller" (INFO 12), not as its rank failure: the ranks are checked
+  // first, with its tolerance.
   const Eigen::MatrixXd d12 = p.D.topRightCorner(s.np1(), s.ncon), d21 = p.D.bottomLeftCorner(s.nmeas, s.m1());
   if (full_rank(d12) < s.ncon) fail(3);
   if (full_rank(d21) < s.nmeas) fail(4);
+  // SB10AD's Riccati failures end its γ loop as "no stabilizing controller":
+  // the assumption (A1) is checked here, so that the message names it.
+  const Eigen::MatrixXd B2 = p.B.rightCols(s.ncon), C2 = p.C.bottomRows(s.nmeas);
+  if (const std::string mode = unreachable_mode(p.A, B2); !mode.empty())
+    throw InputError("hinf_synthesis: (A, B2) is not stabilizable: the control inputs cannot reach the unstable "
+                     "mode at " + mode);
+  if (const std::string mode = unreachable_mode(p.A.transpose(), C2.transpose()); !mode.empty())
+    throw InputError("hinf_synthesis: (C2, A) is not detectable: the measurements do not see the unstable "
+                     "mode at " + mode);
 }
 
 // One SB10AD call; returns its INFO (argument errors throw).
@@ -123,19 +155,16 @@ HinfController hinf_synthesis(const StateSpace& plant, int nmeas, int ncon, cons
   const Sizes s{int(plant.states()), int(plant.inputs()), int(plant.outputs()), ncon, nmeas};
   check(plant, s);
   HinfController r;
+  const auto at = [](double gamma) { return " at gamma = " + number_text(gamma); };
   if (o.fixed_gamma > 0.0) {
-    if (const int info = run(plant, s, 4, o.fixed_gamma, o, r)) fail(info);
+    if (const int info = run(plant, s, 4, o.fixed_gamma, o, r)) fail(info, at(o.fixed_gamma));
     return r;
   }
-  if (const int info = run(plant, s, 1, o.gamma_max, o, r)) {
-    // The search reports any failure as "no stabilizing controller"; one
-    // step at gamma_max says which assumption of the plant failed.
-    HinfController probe;
-    const int at_max = run(plant, s, 4, o.gamma_max, o, probe);
-    fail(at_max != 0 && at_max != 6 ? at_max : info);
-  }
+  if (const int info = run(plant, s, 1, o.gamma_max, o, r))
+    fail(info, " below gamma_max = " + number_text(o.gamma_max) + " (raise gamma_max, or check the weights)");
   const double gamma_min = r.gamma_min;
-  if (const int info = run(plant, s, 4, (1.0 + o.backoff) * gamma_min, o, r)) fail(info);
+  if (const int info = run(plant, s, 4, (1.0 + o.backoff) * gamma_min, o, r))
+    fail(info, at((1.0 + o.backoff) * gamma_min) + ", (1 + backoff) times the least gamma found");
   r.gamma_min = gamma_min;
   return r;
 }

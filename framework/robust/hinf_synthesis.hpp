@@ -11,8 +11,8 @@
 // search from 1e100 never returns when no controller exists); the
 // controller is recomputed at (1 + backoff) times the γ found, because the
 // controller at the optimum has entries near 1e14 and a loop SB10AD calls
-// stable may not be; every failure is a message naming the assumption of
-// the generalized plant that does not hold.
+// stable may not be; the rank and stabilizability assumptions are checked
+// before SB10AD runs, so their failures are messages that name them.
 #include "framework/robust/state_space.hpp"
 
 namespace hystbench::robust {
@@ -28,7 +28,7 @@ struct HinfOptions {
 struct HinfController {
   StateSpace controller;   // K, states as many as the plant's
   StateSpace closed_loop;  // from w to z
-  double gamma_min = 0.0;  // the least γ the search found admissible
+  double gamma_min = 0.0;  // the least γ the search found admissible (the fixed γ without a search)
   double gamma = 0.0;      // the γ the controller was computed at
   double rcond[4] = {0, 0, 0, 0};  // control and measurement transformations, X and Y Riccati
 };

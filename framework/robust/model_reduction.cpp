@@ -47,8 +47,9 @@ std::string bst_reason(int info) {
 
 void check(const StateSpace& s, int order, const char* who) {
   if (!s.consistent()) throw InputError(std::string(who) + ": the system's matrices have inconsistent sizes");
-  if (order < 0 || order > s.states())
-    throw InputError(std::string(who) + ": order " + std::to_string(order) + " is outside 0.." +
+  // At order 0 SLICOT returns before computing the Hankel values, so no bound would be known.
+  if (order < 1 || order > s.states())
+    throw InputError(std::string(who) + ": order " + std::to_string(order) + " is outside 1.." +
                      std::to_string(s.states()));
 }
 

@@ -14,11 +14,14 @@ struct Reduction {
   StateSpace reduced;
   std::vector<double> hankel;  // Hankel singular values, decreasing (of the phase system for BST)
   int unstable_kept = 0;       // unstable modes kept unreduced (BST)
-  // BT: 2 Σ of the discarded values; BST: Π (1 + σ)/(1 − σ) − 1 over them.
+  // BT: ‖G − Gr‖∞ ≤ 2 Σ of the discarded values. BST: Π (1 + σ)/(1 − σ) − 1
+  // over them bounds the *relative* error of the stable part, weighted by
+  // the inverse of its spectral factor W (W*W = [Gs βI][Gs βI]*); times
+  // ‖[Gs βI]‖∞ it bounds the absolute error of the stable part.
   double error_bound = 0.0;
 };
 
-// Reduces a stable system to `order` states (fewer when the system has
+// Reduces a stable system to `order` (1 or more) states (fewer when the system has
 // fewer significant ones). Throws InputError naming SLICOT's reason.
 Reduction balanced_truncation(const StateSpace& system, TimeDomain domain, int order);
 

@@ -5,6 +5,8 @@
 // Matrices are Eigen's (column-major, as Fortran expects them).
 #include <Eigen/Core>
 
+#include "framework/core/error.hpp"
+
 namespace hystbench::robust {
 
 struct StateSpace {
@@ -22,6 +24,8 @@ struct StateSpace {
 
 // a − b for systems of the same inputs and outputs: the states side by side.
 inline StateSpace difference(const StateSpace& a, const StateSpace& b) {
+  if (!a.consistent() || !b.consistent() || a.inputs() != b.inputs() || a.outputs() != b.outputs())
+    throw InputError("difference: the systems must have consistent matrices and the same inputs and outputs");
   const Eigen::Index na = a.states(), nb = b.states();
   StateSpace d{Eigen::MatrixXd::Zero(na + nb, na + nb), Eigen::MatrixXd(na + nb, a.inputs()),
                Eigen::MatrixXd(a.outputs(), na + nb), a.D - b.D};

@@ -92,10 +92,27 @@ TEST(HinfSynthesis, IllPosedPlantsAreNamedNotCrashed) {
   EXPECT_NE(d21.find("D21 does not have full row rank"), std::string::npos) << d21;
   EXPECT_NE(message_of([&] { hinf_synthesis(sb10fd_example(), 4, 2); }).find("nmeas <= disturbances"),
             std::string::npos);
+  // An unstable mode (A(0,0) = 5, decoupled) that neither u nor y touches.
+  p = sb10fd_example();
+  p.A.row(0).setZero();
+  p.A.col(0).setZero();
+  p.A(0, 0) = 5.0;
+  p.B.row(0).setZero();
+  p.C.col(0).setZero();
+  const std::string unstabilizable = message_of([&] { hinf_synthesis(p, 2, 2); });
+  EXPECT_NE(unstabilizable.find("(A, B2) is not stabilizable"), std::string::npos) << unstabilizable;
+  EXPECT_NE(unstabilizable.find("mode at 5"), std::string::npos) << unstabilizable;
   HinfOptions tight;
   tight.fixed_gamma = 0.1;
   EXPECT_NE(message_of([&] { hinf_synthesis(sb10fd_example(), 2, 2, tight); }).find("gamma too small"),
             std::string::npos);
+}
+
+TEST(HinfNorm, UnstableSystemHasAnInfiniteNorm) {
+  const StateSpace unstable{Eigen::MatrixXd::Constant(1, 1, 2.0), Eigen::MatrixXd::Ones(1, 1),
+                            Eigen::MatrixXd::Ones(1, 1), Eigen::MatrixXd::Zero(1, 1)};
+  EXPECT_TRUE(std::isinf(hinf_norm(unstable, TimeDomain::Continuous).norm));
+  EXPECT_TRUE(std::isinf(hinf_norm(unstable, TimeDomain::Discrete).norm));  // |2| > 1 too
 }
 
 TEST(HinfNorm, BadArgumentComesBackAsAMessageNotAnExit) {

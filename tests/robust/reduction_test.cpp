@@ -43,6 +43,14 @@ TEST(StochasticTruncation, ReproducesSlicotsHankelValues) {
   EXPECT_NEAR(r.error_bound, (1.0214 / 0.9786) * (1.0209 / 0.9791) - 1, 1e-3);
 }
 
+TEST(BalancedTruncation, OrderZeroAndMismatchedDifferenceAreRefused) {
+  EXPECT_THROW(balanced_truncation(ab09_example(), TimeDomain::Continuous, 0), InputError);
+  EXPECT_THROW(stochastic_truncation(ab09_example(), TimeDomain::Continuous, 0, 1.0), InputError);
+  const StateSpace one{Eigen::MatrixXd::Constant(1, 1, -1.0), Eigen::MatrixXd::Ones(1, 1), Eigen::MatrixXd::Ones(1, 1),
+                       Eigen::MatrixXd::Zero(1, 1)};
+  EXPECT_THROW(difference(ab09_example(), one), InputError);
+}
+
 TEST(StochasticTruncation, StrictlyProperSystemNeedsBeta) {
   try {
     stochastic_truncation(ab09_example(), TimeDomain::Continuous, 5, 0.0);
