@@ -4,16 +4,13 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
-#include "framework/cli/fit_summary.hpp"
+#include "framework/cli/comparison_output.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/svr_comparison.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
-#include "framework/discovery/comparison_report.hpp"
 #include "framework/discovery/fit_record.hpp"
-#include "framework/discovery/model_comparison.hpp"
-#include "framework/discovery/noise_floor.hpp"
 #include "framework/io/json_file.hpp"
 #include "framework/svr/svr_model.hpp"
 
@@ -54,15 +51,10 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
 void report(const CompareOptions& o, const DataSource& source, const ModelData& data, Eigen::VectorXd y,
             const std::string& model_text) {
   const auto dir = o.output.prepare("metrics.json");
-  const auto input = comparison_input(data, std::move(y), source.u_unit, source.y_unit);
-  const auto metrics = compare_signals(input);
-  const auto files = write_comparison(dir, input, metrics, "Model " + model_text + " against " + source.file_name(),
-                                      model_text);
-  std::cout << "model " << model_text << " on " << o.data.data
-            << (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : "")
-            << "\n";
-  print_comparison_headline(metrics, source.y_unit);
-  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
+  write_and_print_comparison(
+      dir, source, data, std::move(y), model_text,
+      model_text + " on " + o.data.data +
+          (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : ""));
 }
 
 void compare(const CompareOptions& o, const CLI::App& cmd) {

@@ -1,13 +1,10 @@
 #include "framework/cli/svr_comparison.hpp"
 
 #include <cmath>
-#include <iostream>
 
-#include "framework/cli/fit_summary.hpp"
+#include "framework/cli/comparison_output.hpp"
 #include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
-#include "framework/discovery/comparison_report.hpp"
-#include "framework/discovery/model_comparison.hpp"
 #include "framework/svr/svr_model.hpp"
 
 namespace hystbench::cli {
@@ -27,15 +24,9 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   if (cmd.count("--holdout")) holdout = data.holdout_spec();
   const ModelData model_data = prepare_model_data(m, SignalScales::of(m), holdout);
   const auto dir = output.prepare("metrics.json");
-  const auto input = comparison_input(model_data, model.simulate(m.u, m.y), source.u_unit, source.y_unit);
-  const Comparison metrics = compare_signals(input);
-  const auto files = write_comparison(dir, input, metrics, "Model " + model.describe() + " against " + source.file_name(),
-                                      model.describe());
-  std::cout << "model " << model.describe() << " on " << data.data << " (free run from the first "
-            << model.lags().warmup() << " measured samples)\n";
-  print_comparison_headline(metrics, source.y_unit);
-  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
-  return metrics;
+  return write_and_print_comparison(dir, source, model_data, model.simulate(m.u, m.y), model.describe(),
+                                    model.describe() + " on " + data.data + " (free run from the first " +
+                                        std::to_string(model.lags().warmup()) + " measured samples)");
 }
 
 }  // namespace hystbench::cli

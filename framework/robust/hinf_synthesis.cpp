@@ -97,7 +97,7 @@ std::string unreachable_mode(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B)
 Eigen::Index full_rank(const Eigen::MatrixXd& m) {
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(m);
   svd.setThreshold(std::sqrt(std::numeric_limits<double>::epsilon()));
-  return svd.singularValues().size() && svd.singularValues()[0] > 0 ? svd.rank() : 0;
+  return svd.rank();
 }
 
 void check(const StateSpace& p, const Sizes& s) {

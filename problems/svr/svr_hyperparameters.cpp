@@ -127,7 +127,7 @@ double SvrHyperparameterProblem::fitness(const SvrHyperparameters& h) const {
 
 void SvrHyperparameterProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
                                         Eigen::Ref<Eigen::VectorXd> f) const {
-  for (Eigen::Index i = 0; i < X.cols(); ++i) f[i] = fitness(SvrHyperparameters::from_log10(X(0, i), X(1, i), X(2, i)));
+  evaluate_with(X, f, {});
 }
 
 void SvrHyperparameterProblem::evaluate_with(const Eigen::Ref<const Eigen::MatrixXd>& X,

@@ -1,0 +1,24 @@
+#include "framework/cli/comparison_output.hpp"
+
+#include <iostream>
+
+#include "framework/cli/fit_summary.hpp"
+#include "framework/discovery/comparison_report.hpp"
+#include "framework/discovery/model_comparison.hpp"
+
+namespace hystbench::cli {
+
+Comparison write_and_print_comparison(const std::filesystem::path& dir, const DataSource& source,
+                                      const ModelData& data, Eigen::VectorXd y_model, const std::string& model_text,
+                                      const std::string& model_line) {
+  const auto input = comparison_input(data, std::move(y_model), source.u_unit, source.y_unit);
+  const Comparison metrics = compare_signals(input);
+  const auto files = write_comparison(dir, input, metrics, "Model " + model_text + " against " + source.file_name(),
+                                      model_text);
+  std::cout << "model " << model_line << "\n";
+  print_comparison_headline(metrics, source.y_unit);
+  std::cout << "wrote " << files.size() << " files in " << dir.string() << " (see report.md)\n";
+  return metrics;
+}
+
+}  // namespace hystbench::cli

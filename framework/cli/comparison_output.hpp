@@ -1,0 +1,18 @@
+#pragma once
+// What `compare` (and `diagnose` of an SVR model) write and print for a
+// model output set against the data: metrics.json, report.md and figures in
+// `dir`, then "model <line>", the headline errors and the files written.
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+
+#include "framework/discovery/comparison.hpp"
+#include "framework/discovery/data_source.hpp"
+
+namespace hystbench::cli {
+
+Comparison write_and_print_comparison(const std::filesystem::path& dir, const DataSource& source,
+                                      const ModelData& data, Eigen::VectorXd y_model, const std::string& model_text,
+                                      const std::string& model_line);
+
+}  // namespace hystbench::cli
