@@ -73,6 +73,9 @@ TEST_P(RejectedInput, ExitsWithOneMessageAndWritesNothing) {
   const auto before = corpus_listing();
 
   const auto o = test_support::hystbench(command);
+  // `track` exists only where SLICOT was found at build time.
+  if (entry.json.value("requires", "") == "slicot" && contains(o.output, "built without SLICOT"))
+    GTEST_SKIP() << "this hystbench was built without SLICOT";
 
   SCOPED_TRACE(entry.at("why").get<std::string>() + ": hystbench " + command);
   EXPECT_EQ(o.code, entry.at("exit").get<int>()) << o.output;

@@ -33,5 +33,6 @@ Action add_report_command(CLI::App& app);
 Action add_rank_command(CLI::App& app);
 Action add_control_command(CLI::App& app);
 Action add_svr_command(CLI::App& app);
+Action add_track_command(CLI::App& app);
 
 }  // namespace hystbench::cli

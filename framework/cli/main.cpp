@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
                    hystbench::cli::add_compare_command, hystbench::cli::add_diagnose_command,
                    hystbench::cli::add_discover_command,
                    hystbench::cli::add_report_command, hystbench::cli::add_rank_command,
-                   hystbench::cli::add_control_command, hystbench::cli::add_svr_command}) {
+                   hystbench::cli::add_control_command, hystbench::cli::add_svr_command,
+                   hystbench::cli::add_track_command}) {
     auto action = add(app);
     commands.emplace_back(app.get_subcommands({}).back(), action);
   }

@@ -5,17 +5,11 @@
 #include "framework/core/parameters.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/io/data_path.hpp"
+#include "framework/io/json_file.hpp"
 #include "framework/model/streaming_model.hpp"
 
 namespace hystbench {
 namespace {
-
-struct ResolvedModel {
-  Model model;
-  Eigen::VectorXd x;
-  SignalScales scales;
-  std::string description;
-};
 
 ResolvedModel from_fit(const nlohmann::json& spec, const std::filesystem::path& base_dir,
                        const std::string& where) {
@@ -24,20 +18,26 @@ ResolvedModel from_fit(const nlohmann::json& spec, const std::filesystem::path& 
   FitRecord record = FitRecord::read(path);
   // "seed_chain/fit.json": fit files are told apart by their folder.
   const auto name = path.parent_path().filename() / path.filename();
-  return {record.model, record.x, record.scales, name.string() + ": " + record.model.text()};
+  return {record.model, record.x, record.scales, name.string() + ": " + record.model.text(), InputHold::Linear};
 }
 
-ResolvedModel from_effects(const nlohmann::json& spec, const std::string& where) {
+ResolvedModel from_effects(const nlohmann::json& spec, const std::filesystem::path& base_dir,
+                           const std::string& where) {
   if (!spec["model"].is_string())
     throw InputError(where + ".model: give the effects as a string, e.g. \"hysteresis,asymmetry\"");
   Model model = Model::parse(spec["model"].get<std::string>(), where + ".model");
   SignalScales scales;
   if (spec.contains("scales")) scales = SignalScales::from_json(spec["scales"], where + ".scales");
-  if (!spec.contains("parameters") || !spec["parameters"].is_object())
+  nlohmann::json values = spec.value("parameters", nlohmann::json());
+  // A file of values, as `hystbench simulate --params` reads it.
+  if (values.is_string())
+    values = read_json_file(resolve_data_path(values.get<std::string>(), base_dir, where + ".parameters"),
+                            "parameter file");
+  if (!values.is_object())
     throw InputError(where + ".parameters: give the physical value of every parameter of " +
-                     model.text() + " as an object {\"gain\": .., ...}");
-  const Eigen::VectorXd x = model.from_physical(spec["parameters"], scales, where + ".parameters");
-  return {model, x, scales, model.text()};
+                     model.text() + " as an object {\"gain\": .., ...} or the name of a JSON file holding one");
+  const Eigen::VectorXd x = model.from_physical(values, scales, where + ".parameters");
+  return {model, x, scales, model.text(), InputHold::Linear};
 }
 
 }  // namespace
@@ -48,19 +48,29 @@ const std::vector<std::string>& model_stream_keys() {
   return keys;
 }
 
-ModelStream model_stream(const nlohmann::json& spec, const std::filesystem::path& base_dir,
-                         double sample_time, const std::string& where) {
+ResolvedModel resolve_model(const nlohmann::json& spec, const std::filesystem::path& base_dir,
+                            const std::string& where) {
   if (!spec.is_object() || spec.contains("fit") == spec.contains("model"))
     throw InputError(where + ": give either \"fit\": \"fit.json\" or \"model\" with "
                              "\"parameters\"");
-  ResolvedModel r = spec.contains("fit") ? from_fit(spec, base_dir, where) : from_effects(spec, where);
-  const InputHold hold =
-      parse_input_hold(optional_text(spec, "input_hold", "linear", where), where + ".input_hold");
-  auto inner = std::make_unique<StreamingModel>(r.model, r.x, sample_time, hold, where);
-  if (!inner->valid())
+  ResolvedModel r = spec.contains("fit") ? from_fit(spec, base_dir, where) : from_effects(spec, base_dir, where);
+  r.hold = parse_input_hold(optional_text(spec, "input_hold", "linear", where), where + ".input_hold");
+  return r;
+}
+
+std::unique_ptr<StreamingModel> streaming_model(const ResolvedModel& r, double sample_time,
+                                                const std::string& where) {
+  auto stream = std::make_unique<StreamingModel>(r.model, r.x, sample_time, r.hold, where);
+  if (!stream->valid())
     throw InputError(where + ": the parameters of " + r.model.text() +
                      " are invalid (the model cannot be simulated); check their values");
-  return {std::make_unique<ScaledStream>(std::move(inner), 1.0 / r.scales.u, r.scales.y),
+  return stream;
+}
+
+ModelStream model_stream(const nlohmann::json& spec, const std::filesystem::path& base_dir,
+                         double sample_time, const std::string& where) {
+  const ResolvedModel r = resolve_model(spec, base_dir, where);
+  return {std::make_unique<ScaledStream>(streaming_model(r, sample_time, where), 1.0 / r.scales.u, r.scales.y),
           r.description};
 }
 

@@ -37,6 +37,10 @@ class EffectStepper {
   virtual double step(double signal, double stage_input) = 0;
   // An independent copy in the current state.
   virtual std::unique_ptr<EffectStepper> clone() const = 0;
+  // Takes the state of `from`, a stepper of the same effect and parameters,
+  // without allocating; false when this stepper cannot (then clone). An
+  // inverse tries many inputs at one sample from the same state.
+  virtual bool copy_state(const EffectStepper& /*from*/) { return false; }
 };
 
 // A stepper from a per-sample kernel(state, signal, stage_input) -> output
@@ -48,6 +52,11 @@ class KernelStepper final : public EffectStepper {
   void reset() override { state_ = State{}; }
   double step(double signal, double stage_input) override { return kernel_(state_, signal, stage_input); }
   std::unique_ptr<EffectStepper> clone() const override { return std::make_unique<KernelStepper>(*this); }
+  bool copy_state(const EffectStepper& from) override {
+    const auto* same = dynamic_cast<const KernelStepper*>(&from);
+    if (same) state_ = same->state_;
+    return same != nullptr;
+  }
 
  private:
   Kernel kernel_;

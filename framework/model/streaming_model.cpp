@@ -58,7 +58,13 @@ bool StreamingModel::run_stage(Steppers& stage, double& signal, double stage_inp
   return true;
 }
 
-double StreamingModel::step(double u) {
+double StreamingModel::checked(bool finite, double signal) {
+  if (finite && std::isfinite(signal)) return signal;
+  diverged_ = true;
+  return kNaN;
+}
+
+double StreamingModel::step_front(double u) {
   if (!valid_ || diverged_) return kNaN;
   // The stage plumbing of Model::simulate, one sample at a time.
   double signal = u;
@@ -66,11 +72,29 @@ double StreamingModel::step(double u) {
   const double v = signal;
   signal *= gain_;
   finite = finite && run_stage(stages_[index_of(EffectStage::Nonlinearity)], signal, v);
+  return checked(finite, signal);
+}
+
+double StreamingModel::step_back(double w) {
+  if (!valid_ || diverged_) return kNaN;
+  double signal = w;
+  bool finite = true;
   for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output})
     finite = finite && run_stage(stages_[index_of(stage)], signal, signal);
-  if (finite && std::isfinite(signal)) return signal;
-  diverged_ = true;
-  return kNaN;
+  return checked(finite, signal);
+}
+
+double StreamingModel::step(double u) { return step_back(step_front(u)); }
+
+void StreamingModel::copy_front_state(const StreamingModel& from) {
+  if (!valid_) return;
+  for (EffectStage stage : {EffectStage::Input, EffectStage::Nonlinearity}) {
+    Steppers& mine = stages_[index_of(stage)];
+    const Steppers& theirs = from.stages_[index_of(stage)];
+    for (std::size_t i = 0; i < mine.size(); ++i)
+      if (!mine[i]->copy_state(*theirs[i])) mine[i] = theirs[i]->clone();
+  }
+  diverged_ = from.diverged_;
 }
 
 std::unique_ptr<SignalStream> StreamingModel::clone() const {

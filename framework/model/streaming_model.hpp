@@ -39,10 +39,22 @@ class StreamingModel final : public SignalStream {
   double step(double u) override;
   std::unique_ptr<SignalStream> clone() const override;
 
+  // step() in two halves, step(u) == step_back(step_front(u)): the static
+  // and hysteretic front (input stage, gain, nonlinearity) gives w, the
+  // signal that enters the dynamics; the back (dynamics and output stages)
+  // gives y. Inverse compensation cancels the front and leaves the back to
+  // a linear controller.
+  double step_front(double u);
+  double step_back(double w);
+  // The front's state taken from `from`, a copy of this model: one sample's
+  // front can then be tried for many inputs.
+  void copy_front_state(const StreamingModel& from);
+
  private:
   using Steppers = std::vector<std::unique_ptr<EffectStepper>>;
   // Runs one stage's effects on `signal`; false once one of them diverged.
   static bool run_stage(Steppers& stage, double& signal, double stage_input);
+  double checked(bool finite, double signal);
 
   Model model_;  // keeps alive the effects the steppers refer to
   InputHold hold_;
