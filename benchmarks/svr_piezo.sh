@@ -12,7 +12,6 @@
 set -euo pipefail
 out=${1:-results/svr}
 hystbench=${HYSTBENCH:-build/hystbench}
-spec=benchmarks/experiments/svr_piezo
 experiment=benchmarks/experiments/svr_piezo.json
 mkdir -p "$out/data" "$out/greybox"
 # The experiment names its files under results/svr; elsewhere, a copy names $out.
@@ -20,12 +19,7 @@ if [[ "$out" != results/svr ]]; then
   sed "s#results/svr/#$out/#g" "$experiment" > "$out/svr_piezo.json"
   experiment="$out/svr_piezo.json"
 fi
-# 0.5 % noise and a 0.1 µm sensor resolution; seeds 202 (training) and 203 (tests).
-for record in train:202 test:203; do
-  "$hystbench" simulate --model hysteresis,asymmetry,msd --params "$spec/actuator.params.json" \
-    --excitation "$spec/${record%%:*}.excitation.json" --noise 0.005 --resolution 0.1 \
-    --seed "${record##*:}" --input-unit V --output-unit µm --out "$out/data/${record%%:*}.csv"
-done
+HYSTBENCH="$hystbench" benchmarks/svr_piezo_data.sh "$out/data"
 "$hystbench" fit --data "$out/data/train.csv" --model hysteresis,asymmetry,msd --input-unit V \
   --output-unit µm --out "$out/greybox" --force | tee "$out/greybox/fit.log"
 "$hystbench" svr "$experiment" --out "$out/piezo" --force | tee "$out/piezo.log"

@@ -67,6 +67,8 @@ class SvrHammerstein {
   Eigen::VectorXd simulate(const Eigen::VectorXd& x, const Eigen::VectorXd& y_start) const;
 
   const SvrLags& lags() const { return lags_; }
+  const MinMaxScale& input_scale() const { return x_scale_; }
+  const MinMaxScale& output_scale() const { return y_scale_; }
   const SvrRegressor& regressor() const { return svr_; }
   const std::optional<ArxFit>& arx() const { return arx_; }
 

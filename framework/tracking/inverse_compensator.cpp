@@ -16,44 +16,29 @@ double InverseStatistics::rms_residual() const {
   return solved > 0 ? std::sqrt(sum_squared_residual / double(solved)) : 0.0;
 }
 
-InverseCompensator::InverseCompensator(const ResolvedModel& model, double sample_time, double u_min,
+InverseCompensator::InverseCompensator(const IdentifiedModel& model, const std::string& description, double u_min,
                                        double u_max, double tolerance)
-    : front_(streaming_model(model, sample_time, "inverse")),
-      scratch_(std::make_unique<StreamingModel>(*front_)),
-      u_scale_(model.scales.u),
-      w_scale_(model.scales.y),
-      u_min_(u_min),
-      u_max_(u_max),
-      tolerance_(tolerance) {
+    : model_(model.clone()), u_min_(u_min), u_max_(u_max), tolerance_(tolerance) {
   if (!(u_min < u_max)) throw InputError("inverse: the input range needs u_min < u_max");
   if (!(tolerance > 0.0)) throw InputError("inverse: the tolerance must be positive");
+  model_->reset();
   // A front whose output does not move with the current input (an input
   // delay of a sample or more) has no inverse at the current sample.
   if (!(std::abs(trial(u_max) - trial(u_min)) > tolerance))
-    throw InputError("inverse: the front of " + model.model.text() +
+    throw InputError("inverse: the front of " + description +
                      " does not respond to the current input (an input delay?); inverse compensation "
                      "needs a front whose output moves with the input it is given");
 }
 
 InverseCompensator::InverseCompensator(const InverseCompensator& o)
-    : front_(std::make_unique<StreamingModel>(*o.front_)),
-      scratch_(std::make_unique<StreamingModel>(*o.scratch_)),
-      u_scale_(o.u_scale_),
-      w_scale_(o.w_scale_),
-      u_min_(o.u_min_),
-      u_max_(o.u_max_),
-      tolerance_(o.tolerance_),
-      stats_(o.stats_) {}
+    : model_(o.model_->clone()), u_min_(o.u_min_), u_max_(o.u_max_), tolerance_(o.tolerance_), stats_(o.stats_) {}
 
 void InverseCompensator::reset() {
-  front_->reset();
+  model_->reset();
   stats_ = {};
 }
 
-double InverseCompensator::trial(double u) {
-  scratch_->copy_front_state(*front_);
-  return w_scale_ * scratch_->step_front(u / u_scale_);
-}
+double InverseCompensator::trial(double u) { return model_->trial_front(u); }
 
 // Regula falsi with the Illinois modification: superlinear on the nearly
 // affine fronts of physical models, and never leaves the bracket.
@@ -87,7 +72,7 @@ double InverseCompensator::step(double w_desired) {
     stats_.sum_squared_residual += fu * fu;
   }
   stats_.max_iterations = std::max(stats_.max_iterations, evaluations);
-  front_->step_front(u / u_scale_);
+  model_->step_front(u);
   return u;
 }
 

@@ -16,8 +16,9 @@
 // saturated, as it does when w* lies beyond what the range reaches.
 #include <memory>
 
-#include "framework/control/model_stream.hpp"
-#include "framework/model/streaming_model.hpp"
+#include <string>
+
+#include "framework/tracking/identified_model.hpp"
 
 namespace hystbench {
 
@@ -32,8 +33,10 @@ struct InverseStatistics {
 
 class InverseCompensator {
  public:
-  // The front of `model` at `sample_time`; `tolerance` on w in output units.
-  InverseCompensator(const ResolvedModel& model, double sample_time, double u_min, double u_max,
+  // The front of a copy of `model` (at rest); `tolerance` on w in output
+  // units. Throws InputError naming `description` when the front does not
+  // move with the current input.
+  InverseCompensator(const IdentifiedModel& model, const std::string& description, double u_min, double u_max,
                      double tolerance);
   InverseCompensator(const InverseCompensator& other);
 
@@ -45,8 +48,8 @@ class InverseCompensator {
   const InverseStatistics& statistics() const { return stats_; }
 
  private:
-  std::unique_ptr<StreamingModel> front_, scratch_;
-  double u_scale_, w_scale_, u_min_, u_max_, tolerance_;
+  std::unique_ptr<IdentifiedModel> model_;
+  double u_min_, u_max_, tolerance_;
   InverseStatistics stats_;
 };
 

@@ -92,10 +92,11 @@ NominalDynamics nominal_from_transfer(std::vector<double> num, std::vector<doubl
   return n;
 }
 
-NominalDynamics identify_dynamics(const ResolvedModel& model, double sample_time, int p, int q,
+NominalDynamics identify_dynamics(const IdentifiedModel& model, double sample_time, int p, int q,
                                   std::uint64_t seed, const std::string& where) {
   if (p < 1 || q < 1 || p > 8 || q > 8) throw InputError(where + ": the orders p and q must be in 1..8");
-  auto stream = streaming_model(model, sample_time, where);
+  auto stream = model.clone();
+  stream->reset();
   // The back is linear and works on any scale; a random staircase with a
   // few samples per step excites it up to a fraction of the Nyquist rate.
   Rng rng(seed);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/control/model_stream.hpp"
+#include "framework/tracking/identified_model.hpp"
 #include "framework/robust/state_space.hpp"
 
 namespace hystbench {
@@ -28,7 +28,7 @@ struct NominalDynamics {
 
 // Throws InputError naming `where` when the ARX fit is unstable or L has a
 // zero on or outside the unit circle (Wr would then be unstable).
-NominalDynamics identify_dynamics(const ResolvedModel& model, double sample_time, int p, int q,
+NominalDynamics identify_dynamics(const IdentifiedModel& model, double sample_time, int p, int q,
                                   std::uint64_t seed, const std::string& where);
 
 // L and Wr from a given L(z) (seed 002's printed one, a test's): the same

@@ -7,6 +7,7 @@
 #include "framework/core/text.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/io/json_file.hpp"
+#include "framework/control/model_stream.hpp"
 
 namespace hystbench {
 namespace {
@@ -117,7 +118,7 @@ TrackingReference read_signal(const nlohmann::json& s, double amplitude, double 
   return make_reference(frequencies, amplitude, offset, where);
 }
 
-// The label names the amplitude when a signal sets its own: "10 Hz, 15 µm".
+// The label names the amplitude when a signal sets its own: "10 Hz amplitude 15".
 void read_references(const nlohmann::json& j, TrackingExperiment& x, const std::string& where) {
   require_known_keys(j, {"amplitude", "offset", "signals"}, where);
   const double amplitude = optional_number(j, "amplitude", 15.0, 0.0, kInf, where);
@@ -129,7 +130,7 @@ void read_references(const nlohmann::json& j, TrackingExperiment& x, const std::
     x.references.push_back(read_signal(signals[i], amplitude, offset, where + ".signals[" + std::to_string(i) + "]"));
     TrackingReference& r = x.references.back();
     if (r.amplitude != amplitude || r.offset != offset)
-      r.label += ", " + format_number("%g", r.amplitude) + " " + x.y_unit + " about " + format_number("%g", r.offset);
+      r.label += " amplitude " + format_number("%g", r.amplitude);
   }
 }
 
@@ -163,7 +164,8 @@ TrackingExperiment TrackingExperiment::from_json(const nlohmann::json& j, const 
   x.u_min = optional_number(amp, "min", 0.0, -kInf, kInf, where + ".amplifier");
   x.u_max = optional_number(amp, "max", 150.0, -kInf, kInf, where + ".amplifier");
   if (!(x.u_min < x.u_max)) throw InputError(where + ".amplifier: needs min < max");
-  x.identified = resolve_model(object_at(j, "identified", where), base, where + ".identified");
+  x.identified = read_identified(object_at(j, "identified", where), base, where + ".identified");
+  x.identified_model = x.identified.make(x.sample_time);
   const nlohmann::json nominal = object_at(j, "nominal", where);
   require_known_keys(nominal, {"p", "q"}, where + ".nominal");
   x.p = int(optional_number(nominal, "p", 2, 1, 8, where + ".nominal"));

@@ -5,12 +5,13 @@
 // anything runs.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "framework/control/model_stream.hpp"
+#include "framework/tracking/identified_model.hpp"
 #include "framework/tracking/hinf_design.hpp"
 #include "framework/tracking/tracking_loop.hpp"
 #include "framework/tracking/tracking_reference.hpp"
@@ -35,7 +36,8 @@ struct TrackingExperiment {
   std::string plant_description;
   SensorSettings sensor;
   double u_min = 0.0, u_max = 150.0;
-  ResolvedModel identified{Model::parse("none"), Eigen::VectorXd(), SignalScales{}, "", InputHold::Linear};
+  IdentifiedSource identified;
+  std::shared_ptr<IdentifiedModel> identified_model;  // at the loop's rate, at rest: copy before use
   int p = 2, q = 2;
   UncertaintySpec uncertainty;
   DesignOptions design;

@@ -21,7 +21,7 @@
 namespace hystbench {
 
 struct TrackingReference {
-  std::string label;        // "10 Hz", "10/20/40 Hz", "10 Hz, 15 µm"
+  std::string label;        // "10 Hz", "10/20/40 Hz", "10 Hz amplitude 15"
   std::string frequencies;  // "10", "10/20/40"
   std::vector<double> hz;
   double amplitude = 0.0, offset = 0.0;

@@ -8,6 +8,7 @@
 
 #include "framework/core/parallel_jobs.hpp"
 #include "framework/core/rng.hpp"
+#include "framework/control/model_stream.hpp"
 #include "framework/core/text.hpp"
 
 namespace hystbench {
@@ -24,14 +25,14 @@ double seconds_since(Clock::time_point start) {
 // the last. Hysteresis leaves the output above its rest value at the lowest
 // input once the actuator has been driven, so the first sweep overstates it.
 void reachable_range(const TrackingExperiment& x, TrackingResults& r) {
-  auto stream = streaming_model(x.identified, x.sample_time, "identified");
+  auto model = x.identified_model->clone();
   const long half = std::lround(1.0 / x.sample_time), cycle = 2 * half;
   r.reachable_low = std::numeric_limits<double>::infinity();
   r.reachable_high = -r.reachable_low;
   for (long k = 0; k < 3 * cycle; ++k) {
     const long phase = k % cycle;
     const double share = double(phase <= half ? phase : cycle - phase) / double(half);
-    const double y = x.identified.scales.y * stream->step((x.u_min + share * (x.u_max - x.u_min)) / x.identified.scales.u);
+    const double y = model->step_back(model->step_front(x.u_min + share * (x.u_max - x.u_min)));
     if (k < 2 * cycle) continue;
     r.reachable_low = std::min(r.reachable_low, y);
     r.reachable_high = std::max(r.reachable_high, y);
@@ -39,7 +40,7 @@ void reachable_range(const TrackingExperiment& x, TrackingResults& r) {
 }
 
 void design(TrackingExperiment& x, TrackingResults& r) {
-  r.nominal = identify_dynamics(x.identified, x.sample_time, x.p, x.q, x.seed, "nominal");
+  r.nominal = identify_dynamics(*x.identified_model, x.sample_time, x.p, x.q, x.seed, "nominal");
   const UncertaintySpec& u = x.uncertainty;
   if (u.kind == "seed")
     r.uncertainty = seed_uncertainty_weight();
@@ -54,7 +55,7 @@ void design(TrackingExperiment& x, TrackingResults& r) {
   r.seed_check = check_seed_numbers();
   reachable_range(x, r);
   // Refuses a front that cannot be inverted now rather than after the first run.
-  InverseCompensator(x.identified, x.sample_time, x.u_min, x.u_max, x.inverse_tolerance);
+  InverseCompensator(*x.identified_model, x.identified.description, x.u_min, x.u_max, x.inverse_tolerance);
 }
 
 std::string status_of(const TrackingRow& row, const TrackingResults& r, const std::string& unit) {
@@ -87,7 +88,8 @@ void run_tracking_rows(const TrackingExperiment& x, TrackingResults& r,
                        const std::function<void(const std::string&)>& progress) {
   const auto start = Clock::now();
   const ModelStream plant = model_stream(x.plant, x.base_dir, x.sample_time, "plant");
-  const InverseCompensator inverse(x.identified, x.sample_time, x.u_min, x.u_max, x.inverse_tolerance);
+  const InverseCompensator inverse(*x.identified_model, x.identified.description, x.u_min, x.u_max,
+                                   x.inverse_tolerance);
   const TrackingSetup setup{x.sample_time, plant.stream.get(), &inverse, &r.nominal.feedforward, x.sensor};
   r.rows.clear();
   for (const TrackingReference& ref : x.references)

@@ -45,15 +45,17 @@ double dominant_hz(const Eigen::VectorXd& x, Eigen::Index begin, Eigen::Index en
   return best_amplitude > 0.0 ? best : 0.0;
 }
 
-std::vector<UncertaintyPoint> record_points(const ResolvedModel& model, const std::filesystem::path& path,
+// The model is driven by the record from rest. An SVR front answers for
+// the next sample: its output is compared one sample on.
+std::vector<UncertaintyPoint> record_points(const IdentifiedSource& model, const std::filesystem::path& path,
                                             const std::string& where) {
   const Measurement m = read_measurement(path);
-  auto stream = streaming_model(model, m.sample_time, where);
-  Eigen::VectorXd w(m.size()), e(m.size());
-  for (Eigen::Index k = 0; k < m.size(); ++k) {
-    const double front = stream->step_front(m.u[k] / model.scales.u);
-    w[k] = model.scales.y * front;
-    e[k] = m.y[k] - model.scales.y * stream->step_back(front);
+  auto stream = model.make(m.sample_time);
+  const Eigen::Index lead = model.sample_time > 0.0 ? 1 : 0;
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(m.size()), e = Eigen::VectorXd::Zero(m.size());
+  for (Eigen::Index k = 0; k + lead < m.size(); ++k) {
+    w[k + lead] = stream->step_front(m.u[k]);
+    e[k + lead] = m.y[k + lead] - stream->step_back(w[k + lead]);
   }
   if (!e.allFinite()) throw InputError(where + ": the identified model diverges on " + path.string());
   std::vector<UncertaintyPoint> points;
@@ -101,7 +103,7 @@ UncertaintyWeight given_uncertainty_weight(const std::vector<double>& num, const
   return w;
 }
 
-UncertaintyWeight residual_uncertainty_weight(const ResolvedModel& model,
+UncertaintyWeight residual_uncertainty_weight(const IdentifiedSource& model,
                                               const std::vector<std::filesystem::path>& records,
                                               double margin, double rise, const std::string& where) {
   if (!(margin >= 1.0)) throw InputError(where + ".margin: must be at least 1 (the weight bounds the points)");

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/control/model_stream.hpp"
+#include "framework/tracking/identified_model.hpp"
 #include "framework/robust/state_space.hpp"
 
 namespace hystbench {
@@ -47,7 +47,7 @@ UncertaintyWeight given_uncertainty_weight(const std::vector<double>& num, const
 
 // Throws InputError naming `where` when a record cannot be read or no
 // segment has a usable dominant frequency.
-UncertaintyWeight residual_uncertainty_weight(const ResolvedModel& model,
+UncertaintyWeight residual_uncertainty_weight(const IdentifiedSource& model,
                                               const std::vector<std::filesystem::path>& records,
                                               double margin, double rise, const std::string& where);
 

@@ -1,0 +1,56 @@
+#include "framework/svr/svr_stream.hpp"
+
+namespace hystbench {
+
+SvrStream::SvrStream(const SvrHammerstein& model, double rest_input, double rest_output)
+    : model_(&model), rest_input_(rest_input), rest_output_(rest_output) {
+  reset();
+}
+
+void SvrStream::reset() {
+  const SvrLags& l = model_->lags();
+  row_.resize(l.m + l.n + 2);
+  row_.head(l.m + 1).setConstant(model_->input_scale().to_unit(rest_input_));
+  row_.tail(l.n + 1).setConstant(model_->output_scale().to_unit(rest_output_));
+  const auto& arx = model_->arx();
+  back_in_.assign(arx ? arx->q : 0, rest_output_);
+  back_out_.assign(arx ? arx->p : 0, rest_output_);
+}
+
+double SvrStream::predict_front(double u) const {
+  const double kept = row_[0];
+  row_[0] = model_->input_scale().to_unit(u);
+  const double w = model_->regressor().predict(row_);
+  row_[0] = kept;
+  return model_->output_scale().from_unit(w);
+}
+
+double SvrStream::step_front(double u) {
+  const SvrLags& l = model_->lags();
+  row_[0] = model_->input_scale().to_unit(u);
+  const double w = model_->regressor().predict(row_);
+  // Shift: x(k) becomes x(k−1), the new w becomes w(k).
+  for (int i = l.m; i > 0; --i) row_[i] = row_[i - 1];
+  for (int i = l.n; i > 0; --i) row_[l.m + 1 + i] = row_[l.m + i];
+  row_[l.m + 1] = w;
+  return model_->output_scale().from_unit(w);
+}
+
+double SvrStream::step_back(double w) {
+  const auto& arx = model_->arx();
+  if (!arx) return w;
+  if (!back_in_.empty()) {
+    back_in_.insert(back_in_.begin(), w);
+    back_in_.pop_back();
+  }
+  double y = 0.0;
+  for (int j = 0; j < arx->q; ++j) y += arx->b[j] * back_in_[j];
+  for (int i = 0; i < arx->p; ++i) y -= arx->a[i] * back_out_[i];
+  if (!back_out_.empty()) {
+    back_out_.insert(back_out_.begin(), y);
+    back_out_.pop_back();
+  }
+  return y;
+}
+
+}  // namespace hystbench

@@ -1,0 +1,26 @@
+# tracking_100-Hz.gp: reference, output and error at 100 Hz with 2DOF Hinf (3rd order)
+#
+# Reads tracking_100-Hz.csv.
+# To re-render after editing, run inside this folder:
+#     gnuplot tracking_100-Hz.gp
+# It writes tracking_100-Hz.svg, tracking_100-Hz.png and tracking_100-Hz.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set datafile separator ","
+set key outside bottom center horizontal
+set grid
+set title "100 Hz, 2DOF Hinf (3rd order)" noenhanced
+set xlabel "time in the scored window (s)"
+set ylabel "displacement (µm)" noenhanced
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "tracking_100-Hz.".ext
+  plot "tracking_100-Hz.csv" using 1:2 with lines lw 2 lc rgb "black" title "reference", \
+       "tracking_100-Hz.csv" using 1:3 with lines lw 1.5 dt 2 lc rgb "#d62728" title "output", \
+       "tracking_100-Hz.csv" using 1:4 with lines lw 1.5 lc rgb "#1f77b4" title "error"
+}
+unset output
