@@ -6,11 +6,13 @@
 #   piezo/      the grey-box model (results/svr/greybox/fit.json), loop at 10 kHz as in the seed
 #   piezo_2khz/ the same at 2 kHz, the rate of the SVR model
 #   piezo_svr/  the SVR model (results/svr/piezo/svr_model.json) at 2 kHz
+#   fixed_order/ every optimizer tuning a 3rd-order H-infinity controller directly
+#               (hystbench run benchmarks/experiments/fixed_order_hinf.json)
 #
 #   benchmarks/tracking_piezo.sh [OUT_DIR]      # default results/tracking
 #
 # The test record is not committed: it is remade bit for bit when missing.
-# Needs a built build/hystbench (or HYSTBENCH=path). Under a minute on 2 cores.
+# Needs a built build/hystbench (or HYSTBENCH=path). About a minute on 2 cores.
 set -euo pipefail
 out=${1:-results/tracking}
 hystbench=${HYSTBENCH:-build/hystbench}
@@ -19,3 +21,4 @@ mkdir -p "$out"
 for run in piezo piezo_2khz piezo_svr; do
   "$hystbench" track "benchmarks/experiments/tracking_$run.json" --out "$out/$run" --force | tee "$out/$run.log"
 done
+"$hystbench" run benchmarks/experiments/fixed_order_hinf.json --out "$out/fixed_order" --force | tee "$out/fixed_order.log"

@@ -14,6 +14,7 @@
 #include "framework/report/figures.hpp"
 #include "framework/tracking/tracking_figures.hpp"
 #include "framework/tracking/tracking_report.hpp"
+#include "problems/robust/fixed_order_hinf.hpp"
 #endif
 
 namespace hystbench::cli {
@@ -34,6 +35,14 @@ void print_summary(const TrackingExperiment& x, const TrackingResults& r) {
             << ", full order " << d.full.states() << " (norm " << format_number("%.4g", d.full_check.norm)
             << "), reduced to " << d.reduced.states() << " by " << d.reduction << " (norm "
             << format_number("%.4g", d.reduced_check.norm) << ")\n";
+  // Above this, L is a poor account of the model's back (not linear, or
+  // not of these orders) and the design rests on it.
+  if (r.nominal.misfit > 0.3)
+    std::cout << "note: L(z) misses the model's linear part by " << format_number("%.2g", r.nominal.misfit)
+              << " of its output; see controller.json (nominal) and docs/tracking.md#nominal-model\n";
+  if (d.gamma_min >= 1.0)
+    std::cout << "note: gamma_min " << format_number("%.3g", d.gamma_min)
+              << " >= 1: the weights cannot be met, and robust stability is not guaranteed\n";
   for (const TrackingRow& row : r.rows) {
     std::cout << "  " << row.reference->label << ", " << row.controller->label << ": ARMSE "
               << quantity(row.run.score.armse, x.y_unit) << ", RE " << format_number("%.2f", 100 * row.run.score.re)
@@ -69,6 +78,9 @@ void track(const TrackOptions&) {
 }  // namespace
 
 Action add_track_command(CLI::App& app) {
+#ifdef HYSTBENCH_WITH_SLICOT
+  link_fixed_order_hinf();  // `hystbench run` offers the problem too
+#endif
   auto o = std::make_shared<TrackOptions>();
   auto* cmd = app.add_subcommand(
       "track", "Track references with an identified model (seed 002): inverse compensation of its front, a "

@@ -86,8 +86,10 @@ double StreamingModel::step_back(double w) {
 
 double StreamingModel::step(double u) { return step_back(step_front(u)); }
 
+// A stepper without copy_state (an out-of-tree effect's replay stepper) is
+// cloned instead: correct, but it allocates at every trial.
 void StreamingModel::copy_front_state(const StreamingModel& from) {
-  if (!valid_) return;
+  if (!valid_ || !from.valid_) return;
   for (EffectStage stage : {EffectStage::Input, EffectStage::Nonlinearity}) {
     Steppers& mine = stages_[index_of(stage)];
     const Steppers& theirs = from.stages_[index_of(stage)];

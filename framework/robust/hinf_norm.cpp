@@ -1,7 +1,5 @@
 #include "framework/robust/hinf_norm.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <numbers>
 #include <utility>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "framework/core/error.hpp"
+#include "framework/robust/linear_system.hpp"
 #include "framework/robust/slicot_error.hpp"
 
 extern "C" void ab13dd_(const char* dico, const char* jobe, const char* equil, const char* jobd, const int* n,
@@ -40,12 +39,6 @@ std::string reason(int info) {
   }
 }
 
-bool stable(const Eigen::MatrixXd& A, TimeDomain domain) {
-  if (A.rows() == 0) return true;
-  const Eigen::VectorXcd poles = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
-  return domain == TimeDomain::Continuous ? poles.real().maxCoeff() < 0.0 : poles.cwiseAbs().maxCoeff() < 1.0;
-}
-
 double decode(const double* v) {  // [value, 1], or [.., 0] for infinity
   return v[1] == 0.0 ? std::numeric_limits<double>::infinity() : v[0];
 }
@@ -55,19 +48,12 @@ double decode(const double* v) {  // [value, 1], or [.., 0] for infinity
 double gain_at(const StateSpace& s, TimeDomain domain, double w) {
   const std::complex<double> x = domain == TimeDomain::Continuous ? std::complex<double>(0.0, w)
                                                                   : std::polar(1.0, w);
-  const Eigen::Index n = s.states();
-  Eigen::MatrixXcd g = s.D.cast<std::complex<double>>();
-  if (n > 0) {
-    const Eigen::MatrixXcd pencil = x * Eigen::MatrixXcd::Identity(n, n) - s.A.cast<std::complex<double>>();
-    g += s.C.cast<std::complex<double>>() * pencil.partialPivLu().solve(s.B.cast<std::complex<double>>());
-  }
-  return Eigen::JacobiSVD<Eigen::MatrixXcd>(g).singularValues()(0);
+  return Eigen::JacobiSVD<Eigen::MatrixXcd>(frequency_response_matrix(s, x)).singularValues()(0);
 }
 
 // The peak over the poles' natural frequencies and a log grid around them:
 // a lower bound of the norm, and where it lies.
-std::pair<double, double> grid_peak(const StateSpace& s, TimeDomain domain) {
-  const Eigen::VectorXcd poles = Eigen::EigenSolver<Eigen::MatrixXd>(s.A, false).eigenvalues();
+std::pair<double, double> grid_peak(const StateSpace& s, TimeDomain domain, const Eigen::VectorXcd& poles) {
   std::vector<double> w{0.0};
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (const auto& p : poles) {
@@ -100,11 +86,13 @@ HinfNorm ab13dd(const StateSpace& s, TimeDomain domain, double tolerance, double
 HinfNorm hinf_norm(const StateSpace& s, TimeDomain domain, double tolerance) {
   if (!s.consistent()) throw InputError("hinf_norm: the system's matrices have inconsistent sizes");
   // AB13DD computes the L∞ norm, finite for an unstable system too.
-  if (!stable(s.A, domain))
-    return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
+  const Eigen::VectorXcd p = poles(s);
+  const bool stable = domain == TimeDomain::Continuous ? (p.size() == 0 || p.real().maxCoeff() < 0.0)
+                                                       : (p.size() == 0 || p.cwiseAbs().maxCoeff() < 1.0);
+  if (!stable) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
   HinfNorm norm = ab13dd(s, domain, tolerance, 0.0);
   if (s.states() == 0) return norm;
-  const auto [peak, where] = grid_peak(s, domain);
+  const auto [peak, where] = grid_peak(s, domain, p);
   if (peak <= norm.norm * (1.0 + 1e-6)) return norm;
   const HinfNorm again = ab13dd(s, domain, tolerance, where);
   if (again.norm >= peak) return again;

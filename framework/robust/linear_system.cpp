@@ -92,13 +92,19 @@ bool is_stable(const StateSpace& system, TimeDomain domain) {
   return stability_margin(system, domain) < (domain == TimeDomain::Continuous ? 0.0 : 1.0);
 }
 
+Eigen::MatrixXcd frequency_response_matrix(const StateSpace& system, std::complex<double> x) {
+  require_consistent(system, "frequency_response");
+  const Eigen::Index n = system.states();
+  Eigen::MatrixXcd g = system.D.cast<std::complex<double>>();
+  if (n == 0) return g;
+  const Eigen::MatrixXcd pencil = x * Eigen::MatrixXcd::Identity(n, n) - system.A.cast<std::complex<double>>();
+  g += system.C.cast<std::complex<double>>() * pencil.partialPivLu().solve(system.B.cast<std::complex<double>>());
+  return g;
+}
+
 std::complex<double> frequency_response(const StateSpace& system, std::complex<double> x) {
   require_siso(system, "frequency_response");
-  const Eigen::Index n = system.states();
-  if (n == 0) return system.D(0, 0);
-  const Eigen::MatrixXcd pencil = x * Eigen::MatrixXcd::Identity(n, n) - system.A.cast<std::complex<double>>();
-  const Eigen::VectorXcd state = pencil.partialPivLu().solve(system.B.cast<std::complex<double>>());
-  return (system.C.cast<std::complex<double>>() * state)(0) + system.D(0, 0);
+  return frequency_response_matrix(system, x)(0, 0);
 }
 
 std::complex<double> frequency_response_hz(const StateSpace& system, double hz, double sample_time) {
@@ -123,11 +129,14 @@ StateSpace series(const StateSpace& first, const StateSpace& second) {
   return s;
 }
 
+StateSpace negated(StateSpace system) {
+  system.C = -system.C;
+  system.D = -system.D;
+  return system;
+}
+
 StateSpace parallel(const StateSpace& first, const StateSpace& second) {
-  StateSpace negated = second;
-  negated.C = -negated.C;
-  negated.D = -negated.D;
-  return difference(first, negated);
+  return difference(first, negated(second));
 }
 
 StateSpace lower_lft(const StateSpace& P, const StateSpace& K, int nmeas, int ncon) {

@@ -13,8 +13,8 @@
 namespace hystbench::robust {
 
 // num(x)/den(x) with coefficients of the highest power first, in s or z:
-// the controllable canonical realisation. Throws InputError when the
-// fraction is not proper or den is empty or starts with 0.
+// the controllable canonical realisation. Leading zeros are dropped.
+// Throws InputError when den is zero or the fraction is not proper.
 StateSpace transfer_function(std::vector<double> num, std::vector<double> den);
 
 // Roots of a polynomial, highest power first (leading zeros ignored).
@@ -30,13 +30,17 @@ bool is_stable(const StateSpace& system, TimeDomain domain);
 // max Re p (continuous) or max |p| (discrete); -inf without states.
 double stability_margin(const StateSpace& system, TimeDomain domain);
 
-// C (xI − A)⁻¹ B + D of a single-input single-output system at x = s or z.
+// C (xI − A)⁻¹ B + D at x = s or z.
+Eigen::MatrixXcd frequency_response_matrix(const StateSpace& system, std::complex<double> x);
+// The same for a single-input single-output system.
 std::complex<double> frequency_response(const StateSpace& system, std::complex<double> x);
 // The same at f hertz: s = j2πf, or z = exp(j2πf·Ts) when sample_time > 0.
 std::complex<double> frequency_response_hz(const StateSpace& system, double hz, double sample_time = 0.0);
 
 // second(first(u)).
 StateSpace series(const StateSpace& first, const StateSpace& second);
+// −system.
+StateSpace negated(StateSpace system);
 // first + second, on the same input.
 StateSpace parallel(const StateSpace& first, const StateSpace& second);
 // The lower linear fractional transformation: P's last `nmeas` outputs feed

@@ -2,21 +2,20 @@
 
 namespace hystbench {
 
-SvrStream::SvrStream(const SvrHammerstein& model, double rest_input, double rest_output)
-    : model_(&model), rest_input_(rest_input), rest_output_(rest_output) {
-  reset();
-}
+SvrStream::SvrStream(const SvrHammerstein& model) : model_(&model) { reset(); }
 
 void SvrStream::reset() {
   const SvrLags& l = model_->lags();
   row_.resize(l.m + l.n + 2);
-  row_.head(l.m + 1).setConstant(model_->input_scale().to_unit(rest_input_));
-  row_.tail(l.n + 1).setConstant(model_->output_scale().to_unit(rest_output_));
+  row_.head(l.m + 1).setConstant(model_->input_scale().to_unit(0.0));
+  row_.tail(l.n + 1).setConstant(model_->output_scale().to_unit(0.0));
   const auto& arx = model_->arx();
-  back_in_.assign(arx ? arx->q : 0, rest_output_);
-  back_out_.assign(arx ? arx->p : 0, rest_output_);
+  back_in_.assign(arx ? arx->q : 0, 0.0);
+  back_out_.assign(arx ? arx->p : 0, 0.0);
 }
 
+// Not safe to call on one stream from two threads (it writes row_[0]);
+// every loop has a stream of its own.
 double SvrStream::predict_front(double u) const {
   const double kept = row_[0];
   row_[0] = model_->input_scale().to_unit(u);

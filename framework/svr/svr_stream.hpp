@@ -16,8 +16,9 @@ namespace hystbench {
 
 class SvrStream {
  public:
-  // Starts at rest: every past input `rest_input`, every past output `rest_output`.
-  SvrStream(const SvrHammerstein& model, double rest_input, double rest_output);
+  // Starts at rest: every past input, front output and output 0 (the
+  // actuator unpowered; stage 2's history then agrees with ArxFit::simulate).
+  explicit SvrStream(const SvrHammerstein& model);
 
   void reset();
   // w(k+1) for input u(k); nothing moves.
@@ -29,7 +30,6 @@ class SvrStream {
 
  private:
   const SvrHammerstein* model_;
-  double rest_input_, rest_output_;
   mutable Eigen::VectorXd row_;      // x(k) .. x(k−m), w(k) .. w(k−n), scaled
   std::vector<double> back_in_, back_out_;  // w(k) .., y(k−1) .., newest first
 };

@@ -32,11 +32,22 @@ ControllerCheck check(const ControllerDesign& d, const StateSpace& K, const Stat
   return c;
 }
 
+// |K(j2πf)| at its largest from 0.01 Hz to 1 MHz: the peak gain of a
+// controller the H∞ norm calls infinite because it is unstable.
+double peak_gain(const StateSpace& K) {
+  double peak = 0.0;
+  for (int i = 0; i <= 400; ++i)
+    peak = std::max(peak, std::abs(robust::frequency_response_hz(K, std::pow(10.0, -2.0 + 8.0 * i / 400.0))));
+  return peak;
+}
+
 robust::Reduction reduce(const StateSpace& K, const DesignOptions& o, std::string& method) {
   if (o.reduction == "stochastic") {
     // AB09HD needs D of full rank or BETA > 0; the central controller is
-    // strictly proper, and BETA of 1e-3 of its norm keeps the error relative.
-    const double beta = K.D.isZero() ? 1e-3 * robust::hinf_norm(K, TimeDomain::Continuous).norm : 0.0;
+    // strictly proper, and BETA of 1e-3 of its gain keeps the error relative.
+    double gain = robust::hinf_norm(K, TimeDomain::Continuous).norm;
+    if (!std::isfinite(gain)) gain = peak_gain(K);
+    const double beta = K.D.isZero() ? 1e-3 * gain : 0.0;
     try {
       method = "stochastic";
       return robust::stochastic_truncation(K, TimeDomain::Continuous, o.reduced_order, beta);
@@ -54,12 +65,24 @@ double relative_error(const StateSpace& K, const StateSpace& Kr) {
   for (int i = 0; i <= 300; ++i) {
     const double hz = std::pow(10.0, 3.0 * i / 300.0);  // 1 Hz to 1 kHz
     const auto full = robust::frequency_response_hz(K, hz);
-    worst = std::max(worst, std::abs(full - robust::frequency_response_hz(Kr, hz)) / std::abs(full));
+    const double error = std::abs(full - robust::frequency_response_hz(Kr, hz));
+    if (std::abs(full) > 0.0) worst = std::max(worst, error / std::abs(full));
   }
   return worst;
 }
 
 }  // namespace
+
+StateSpace reference_dynamics() {
+  const double wn = 2.0 * std::numbers::pi * 1260.0, zeta = 0.6;
+  return robust::transfer_function({wn * wn}, {1.0, 2.0 * zeta * wn, wn * wn});
+}
+
+ControllerDesign reference_design(const DesignOptions& options) {
+  const double ts = 1e-4;
+  const StateSpace l = reference_dynamics();
+  return design_controller(l, robust::zero_order_hold(l, ts), ts, seed_uncertainty_weight(), options);
+}
 
 StateSpace PerformanceWeight::weight() const {
   const double wb = 2.0 * std::numbers::pi * bandwidth_hz;

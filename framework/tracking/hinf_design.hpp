@@ -58,6 +58,13 @@ struct ControllerDesign {
 // Throws InputError naming what failed (the plant's assumptions, SLICOT's reason).
 ControllerDesign design_controller(const NominalDynamics& nominal, const UncertaintyWeight& wa,
                                    const DesignOptions& options);
+// The reference of the tests and of the fixed-order problem: L(s) a 1260 Hz
+// resonance of damping 0.6 (a piezo stack's first mode), designed with seed
+// 002's Wa at 10 kHz, L(z) its zero-order hold. With the default options:
+// γ_min 0.50984, the full controller's norm 0.52204, the 3rd-order one's 0.52454.
+robust::StateSpace reference_dynamics();
+ControllerDesign reference_design(const DesignOptions& options = {});
+
 // The same from a continuous L(s), the loop still checked on L(z) at `sample_time`.
 ControllerDesign design_controller(const robust::StateSpace& continuous_dynamics,
                                    const robust::StateSpace& discrete_dynamics, double sample_time,

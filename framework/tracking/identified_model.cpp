@@ -41,7 +41,7 @@ class CatalogModel final : public IdentifiedModel {
 
 class SvrModel final : public IdentifiedModel {
  public:
-  explicit SvrModel(std::shared_ptr<const SvrHammerstein> m) : model_(std::move(m)), stream_(*model_, 0.0, 0.0) {}
+  explicit SvrModel(std::shared_ptr<const SvrHammerstein> m) : model_(std::move(m)), stream_(*model_) {}
   SvrModel(const SvrModel& o) : model_(o.model_), stream_(o.stream_) {}
 
   void reset() override { stream_.reset(); }

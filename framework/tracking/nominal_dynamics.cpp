@@ -68,6 +68,19 @@ double max_modulus(const Eigen::VectorXcd& roots) {
   return roots.size() ? roots.cwiseAbs().maxCoeff() : 0.0;
 }
 
+// L(z) = (b_0 z^{n−1} + … + b_{q−1} z^{n−q}) / (z^n + a_1 z^{n−1} + … + a_p z^{n−p}), n = max(p, q):
+// the ARX model of y(k) on w(k − 1) .. w(k − q).
+NominalDynamics nominal_from_arx(const ArxFit& fit, double sample_time, const std::string& where) {
+  const int n = std::max(fit.p, fit.q);
+  std::vector<double> num(n + 1, 0.0), den(n + 1, 0.0);
+  den[0] = 1.0;
+  for (int i = 0; i < fit.p; ++i) den[i + 1] = fit.a[i];
+  for (int i = 0; i < fit.q; ++i) num[i + 1] = fit.b[i];
+  NominalDynamics out = nominal_from_transfer(num, den, sample_time, where);
+  out.p = fit.p, out.q = fit.q;
+  return out;
+}
+
 }  // namespace
 
 NominalDynamics nominal_from_transfer(std::vector<double> num, std::vector<double> den, double sample_time,
@@ -77,6 +90,10 @@ NominalDynamics nominal_from_transfer(std::vector<double> num, std::vector<doubl
   n.discrete = robust::transfer_function(num, den);
   if (n.discrete.D(0, 0) != 0.0)
     throw InputError(where + ": L(z) must be strictly proper (the loop applies an input one sample late)");
+  // Wr = 1/(z L) is proper only when L is one sample late and no more.
+  if (robust::polynomial_roots(num).size() + 1 != robust::poles(n.discrete).size())
+    throw InputError(where + ": L(z) must have one pole more than zeros, so that 1/(z L) is proper; its "
+                             "first numerator coefficient b_0 is zero");
   const Eigen::VectorXcd poles = robust::poles(n.discrete), zeros = robust::polynomial_roots(num);
   if (max_modulus(poles) >= 1.0)
     throw InputError(where + ": L(z) is unstable (poles " + roots_text(poles) +
@@ -114,15 +131,19 @@ NominalDynamics identify_dynamics(const IdentifiedModel& model, double sample_ti
     if (k > 0) delayed[k] = w[k - 1];
   }
   if (!y.allFinite()) throw InputError(where + ": the model's dynamics diverge; check its parameters");
-  ArxFit fit = fit_arx(delayed, y, p, q, std::max(p, q), where);
-  refine_output_error(fit, delayed, y);
-  const int n = std::max(p, q);
-  std::vector<double> num(n + 1, 0.0), den(n + 1, 0.0);
-  den[0] = 1.0;
-  for (int i = 0; i < p; ++i) den[i + 1] = fit.a[i];
-  for (int i = 0; i < q; ++i) num[i + 1] = fit.b[i];
-  NominalDynamics out = nominal_from_transfer(num, den, sample_time, where);
-  out.p = p, out.q = q;
+  const ArxFit least_squares = fit_arx(delayed, y, p, q, std::max(p, q), where);
+  ArxFit refined = least_squares;
+  refine_output_error(refined, delayed, y);
+  // The output error does not see where the zeros go: should the refined
+  // L fail the checks the least-squares one passes, the latter is kept.
+  NominalDynamics out;
+  ArxFit fit = refined;
+  try {
+    out = nominal_from_arx(refined, sample_time, where);
+  } catch (const InputError&) {
+    out = nominal_from_arx(least_squares, sample_time, where);  // throws the reason when neither passes
+    fit = least_squares;
+  }
   const Eigen::VectorXd simulated = fit.simulate(delayed);
   const double rms = std::sqrt(y.squaredNorm() / kSamples);
   out.misfit = rms > 0 ? std::sqrt((simulated - y).squaredNorm() / kSamples) / rms : 0.0;

@@ -1,5 +1,6 @@
 #include "framework/tracking/tracking_experiment.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "framework/core/error.hpp"
@@ -118,7 +119,8 @@ TrackingReference read_signal(const nlohmann::json& s, double amplitude, double 
   return make_reference(frequencies, amplitude, offset, where);
 }
 
-// The label names the amplitude when a signal sets its own: "10 Hz amplitude 15".
+// The label names the amplitude and offset a signal sets for itself:
+// "10 Hz amplitude 15 offset 15".
 void read_references(const nlohmann::json& j, TrackingExperiment& x, const std::string& where) {
   require_known_keys(j, {"amplitude", "offset", "signals"}, where);
   const double amplitude = optional_number(j, "amplitude", 15.0, 0.0, kInf, where);
@@ -129,8 +131,74 @@ void read_references(const nlohmann::json& j, TrackingExperiment& x, const std::
   for (std::size_t i = 0; i < signals.size(); ++i) {
     x.references.push_back(read_signal(signals[i], amplitude, offset, where + ".signals[" + std::to_string(i) + "]"));
     TrackingReference& r = x.references.back();
-    if (r.amplitude != amplitude || r.offset != offset)
-      r.label += " amplitude " + format_number("%g", r.amplitude);
+    if (r.amplitude != amplitude) r.label += " amplitude " + format_number("%g", r.amplitude);
+    if (r.offset != offset) r.label += " offset " + format_number("%g", r.offset);
+    for (std::size_t k = 0; k + 1 < x.references.size(); ++k)
+      if (x.references[k].label == r.label)
+        throw InputError(where + ".signals[" + std::to_string(i) + "]: \"" + r.label +
+                         "\" again; every signal is one table row and figure, so give each its own "
+                         "frequencies, amplitude or offset");
+    for (double f : r.hz)
+      if (f >= 0.25 / x.sample_time)
+        throw InputError(where + ".signals[" + std::to_string(i) + "]: " + format_number("%g", f) +
+                         " Hz is not below a quarter of the sampling rate (" +
+                         format_number("%g", 0.25 / x.sample_time) + " Hz)");
+  }
+}
+
+// The simulated plant, its sensor and amplifier; the plant is built once
+// here so that a bad parameter stops the command before anything is written.
+void read_plant(const nlohmann::json& j, TrackingExperiment& x, const std::string& where) {
+  x.plant = object_at(j, "plant", where);
+  require_known_keys(x.plant, model_stream_keys(), where + ".plant");
+  x.plant_description = model_stream(x.plant, x.base_dir, x.sample_time, where + ".plant").description;
+  const nlohmann::json sensor = object_at(j, "sensor", where);
+  require_known_keys(sensor, {"noise_sd", "resolution"}, where + ".sensor");
+  x.sensor = {optional_number(sensor, "noise_sd", 0.0, 0.0, kInf, where + ".sensor"),
+              optional_number(sensor, "resolution", 0.0, 0.0, kInf, where + ".sensor")};
+  const nlohmann::json amp = object_at(j, "amplifier", where);
+  require_known_keys(amp, {"min", "max"}, where + ".amplifier");
+  x.u_min = optional_number(amp, "min", 0.0, -kInf, kInf, where + ".amplifier");
+  x.u_max = optional_number(amp, "max", 150.0, -kInf, kInf, where + ".amplifier");
+  if (!(x.u_min < x.u_max)) throw InputError(where + ".amplifier: needs min < max");
+}
+
+int order(const nlohmann::json& j, const std::string& key, const std::string& where) {
+  const double v = optional_number(j, key, key == "p" ? 2 : 1, 1, 8, where);
+  if (v != std::floor(v)) throw InputError(where + "." + key + ": give a whole number from 1 to 8");
+  return int(v);
+}
+
+// The identified model at the loop's rate, and the orders of its L(z).
+void read_models(const nlohmann::json& j, TrackingExperiment& x, const std::string& where) {
+  const nlohmann::json identified = object_at(j, "identified", where);
+  std::vector<std::string> keys = model_stream_keys();
+  keys.push_back("svr");
+  require_known_keys(identified, keys, where + ".identified");
+  x.identified = read_identified(identified, x.base_dir, where + ".identified");
+  x.identified_model = x.identified.make(x.sample_time);
+  const nlohmann::json nominal = object_at(j, "nominal", where);
+  require_known_keys(nominal, {"p", "q"}, where + ".nominal");
+  x.p = order(nominal, "p", where + ".nominal");
+  x.q = order(nominal, "q", where + ".nominal");
+}
+
+// Runs longer than this many samples are refused: every run keeps its
+// signals (three doubles a sample) for the figures.
+constexpr double kMaxRunSamples = 1e7;
+
+void read_window(const nlohmann::json& j, TrackingExperiment& x, const std::string& where) {
+  const nlohmann::json window = object_at(j, "window", where);
+  require_known_keys(window, {"settle_s", "length_s"}, where + ".window");
+  x.window = {optional_number(window, "settle_s", 0.2, 0.0, 1e4, where + ".window"),
+              optional_number(window, "length_s", 0.1, 0.0, 1e4, where + ".window")};
+  for (const TrackingReference& r : x.references) {
+    const WindowSamples w = window_samples(r, x.window, x.sample_time);
+    if (double(w.end()) > kMaxRunSamples)
+      throw InputError(where + ".references: " + r.label + " needs " + format_number("%.3g", double(w.end())) +
+                       " samples (its common period is " + format_number("%g", 1.0 / r.fundamental_hz) +
+                       " s); keep a run below 1e7 samples: frequencies with a larger common divisor, or a "
+                       "shorter window");
   }
 }
 
@@ -153,23 +221,8 @@ TrackingExperiment TrackingExperiment::from_json(const nlohmann::json& j, const 
   x.name = optional_text(j, "name", "tracking", where);
   x.description = optional_text(j, "description", "", where);
   x.sample_time = 1.0 / optional_number(j, "sample_rate", 10000.0, 1.0, 1e7, where);
-  x.plant = object_at(j, "plant", where);
-  x.plant_description = resolve_model(x.plant, base, where + ".plant").description;
-  const nlohmann::json sensor = object_at(j, "sensor", where);
-  require_known_keys(sensor, {"noise_sd", "resolution"}, where + ".sensor");
-  x.sensor = {optional_number(sensor, "noise_sd", 0.0, 0.0, kInf, where + ".sensor"),
-              optional_number(sensor, "resolution", 0.0, 0.0, kInf, where + ".sensor")};
-  const nlohmann::json amp = object_at(j, "amplifier", where);
-  require_known_keys(amp, {"min", "max"}, where + ".amplifier");
-  x.u_min = optional_number(amp, "min", 0.0, -kInf, kInf, where + ".amplifier");
-  x.u_max = optional_number(amp, "max", 150.0, -kInf, kInf, where + ".amplifier");
-  if (!(x.u_min < x.u_max)) throw InputError(where + ".amplifier: needs min < max");
-  x.identified = read_identified(object_at(j, "identified", where), base, where + ".identified");
-  x.identified_model = x.identified.make(x.sample_time);
-  const nlohmann::json nominal = object_at(j, "nominal", where);
-  require_known_keys(nominal, {"p", "q"}, where + ".nominal");
-  x.p = int(optional_number(nominal, "p", 2, 1, 8, where + ".nominal"));
-  x.q = int(optional_number(nominal, "q", 2, 1, 8, where + ".nominal"));
+  read_plant(j, x, where);
+  read_models(j, x, where);
   x.uncertainty = read_uncertainty(object_at(j, "uncertainty", where), base, where + ".uncertainty");
   x.design = read_design(j, where);
   const nlohmann::json controllers = j.value("controllers", nlohmann::json());
@@ -182,13 +235,9 @@ TrackingExperiment TrackingExperiment::from_json(const nlohmann::json& j, const 
   x.u_unit = optional_text(units, "u", "V", where + ".units");
   x.y_unit = optional_text(units, "y", "µm", where + ".units");
   read_references(object_at(j, "references", where), x, where + ".references");
-  const nlohmann::json window = object_at(j, "window", where);
-  require_known_keys(window, {"settle_s", "length_s"}, where + ".window");
-  x.window = {optional_number(window, "settle_s", 0.2, 0.0, 1e4, where + ".window"),
-              optional_number(window, "length_s", 0.1, 0.0, 1e4, where + ".window")};
+  read_window(j, x, where);
   x.inverse_tolerance = optional_number(j, "inverse_tolerance", 1e-6, 1e-15, 1e3, where);
   x.seed = std::uint64_t(optional_number(j, "seed", 1, 0, 9e15, where));
-  for (const auto& r : x.references) window_samples(r, x.window, x.sample_time);  // every period fits the rate
   return x;
 }
 

@@ -38,7 +38,7 @@ struct TrackingExperiment {
   double u_min = 0.0, u_max = 150.0;
   IdentifiedSource identified;
   std::shared_ptr<IdentifiedModel> identified_model;  // at the loop's rate, at rest: copy before use
-  int p = 2, q = 2;
+  int p = 2, q = 1;
   UncertaintySpec uncertainty;
   DesignOptions design;
   std::vector<TrackingController> controllers;  // H∞ feedback filled in by the design

@@ -49,7 +49,8 @@ TrackingRun run_tracking(const TrackingSetup& setup, const TrackingController& c
   TrackingRun run;
   run.window = window_samples(reference, window, setup.sample_time);
   const Eigen::Index n = run.window.end();
-  run.r.resize(n), run.y.resize(n), run.u.resize(n);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  run.r.setConstant(n, kNaN), run.y.setConstant(n, kNaN), run.u.setConstant(n, kNaN);
   auto plant = setup.plant->clone();
   InverseCompensator inverse(*setup.inverse);
   inverse.reset();
@@ -59,7 +60,7 @@ TrackingRun run_tracking(const TrackingSetup& setup, const TrackingController& c
   const bool use_wr = controller.kind != TrackingController::Kind::Pi;
   double u = 0.0;
   long saturated_before = 0;
-  const double fade = std::min(0.1, double(run.window.begin) * setup.sample_time / 2);
+  const double fade = std::min(0.1, double(run.window.begin) * setup.sample_time / 2);  // within the settling
   long saturated_at_window = 0;
   for (Eigen::Index k = 0; k < n; ++k) {
     const double t = double(k) * setup.sample_time;
@@ -69,17 +70,20 @@ TrackingRun run_tracking(const TrackingSetup& setup, const TrackingController& c
     const double ff = use_wr ? feedforward.step(r) : r;
     const bool saturated = inverse.statistics().saturated > saturated_before;
     saturated_before = inverse.statistics().saturated;
-    u = inverse.step(ff + feedback.step(r - y, saturated));
+    const double w = ff + feedback.step(r - y, saturated);
+    // A controller whose state overflowed: the amplifier would keep y
+    // finite, so the run is stopped and marked rather than scored.
+    if (!std::isfinite(w) || !std::isfinite(y)) {
+      run.finite = false;
+      break;
+    }
+    u = inverse.step(w);
     run.r[k] = r, run.y[k] = y, run.u[k] = u;
   }
   run.inverse = inverse.statistics();
   run.saturated_in_window = run.inverse.saturated - saturated_at_window;
-  run.finite = run.y.allFinite();
   run.score = run.finite ? score_tracking(run.r, run.y, run.window, reference.offset)
-                         : TrackingScore{std::numeric_limits<double>::quiet_NaN(),
-                                         std::numeric_limits<double>::quiet_NaN(),
-                                         std::numeric_limits<double>::quiet_NaN(),
-                                         std::numeric_limits<double>::quiet_NaN()};
+                         : TrackingScore{kNaN, kNaN, kNaN, kNaN};
   return run;
 }
 

@@ -10,14 +10,16 @@
 //   u_k = the inverse of the identified front at w*, within the
 //         amplifier's range [u_min, u_max].
 //
-// The reference fades in over the first tenth of a second (a raised
-// cosine from 0): the actuator starts at rest, and a step to the
+// The reference fades in over the first tenth of a second, or half the
+// settling time when that is shorter (a raised cosine from 0): the actuator starts at rest, and a step to the
 // reference's first value would saturate the amplifier and wind up the
 // controllers before the scored window begins.
 //
 // The feedforward is Wr = 1/(z L) for the H∞ and inverse-only controllers
 // and r itself for the PI; the feedback is the discretised H∞ controller,
-// a PI (its integrator held while the inverse saturates) or nothing.
+// a PI (its integrator held on the sample after one the inverse
+// saturated) or nothing. A run whose controller output stops being finite
+// ends there, marked not finite, its scores NaN.
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
@@ -58,7 +60,7 @@ struct TrackingRun {
   InverseStatistics inverse;
   long saturated_in_window = 0;  // samples of the scored window the amplifier limited
   WindowSamples window;
-  Eigen::VectorXd r, y, u;  // every sample of the run
+  Eigen::VectorXd r, y, u;  // every sample of the run (unset after a divergence)
   bool finite = true;       // false when the loop diverged (the scores are then NaN)
 };
 

@@ -1,5 +1,7 @@
 #include "framework/tracking/tracking_report.hpp"
 
+#include <cmath>
+
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
@@ -86,7 +88,7 @@ table::CellTable make_table(const TrackingExperiment& x, const TrackingResults& 
       const TrackingRow& row = r.rows[i + c];
       const std::string mark = row.status.empty() ? "" : (md ? " †" : "$^\\dagger$");
       marked = marked || !row.status.empty();
-      cells.push_back(format_number("%.4f", row.run.score.armse) + mark);
+      cells.push_back((std::isfinite(row.run.score.armse) ? format_number("%.4f", row.run.score.armse) : "–") + mark);
       cells.push_back(percent(row.run.score.re));
     }
     t.rows.push_back(std::move(cells));

@@ -11,9 +11,9 @@
 //   Wa(s) = k∞ (s + ωc k0/k∞)/(s + ωc)
 //
 // has k0 = margin × the largest point, so it bounds every point, and rises
-// to k∞ = rise × k0 above ωc, the highest measured frequency: beyond the
-// measured band the model is trusted less, as the seed's Wa rises from
-// 0.020 to 0.077.
+// from k0 below ωc/rise to k∞ = rise × k0 above ωc, the highest measured
+// frequency: towards and beyond the edge of the measured band the model is
+// trusted less, as the seed's Wa rises from 0.020 to 0.077.
 #include <filesystem>
 #include <string>
 #include <vector>

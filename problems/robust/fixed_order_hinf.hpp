@@ -10,7 +10,9 @@
 // of the closed loop lft(P_gen, K) (SLICOT's AB13DD); a loop K does not
 // stabilise costs 1e6 plus its largest real pole part, so a search is
 // drawn towards stability. This is MATLAB's hinfstruct/systune job done by
-// any optimizer plugin, against synthesis then reduction.
+// any optimizer plugin, against synthesis then reduction. A stable loop
+// whose norm exceeds the penalty is possible in principle (a huge gain on
+// a poorly damped pair); none is in reach of the default bounds' search.
 //
 // Experiment file:
 //   "problem": {"type": "fixed_order_hinf", "order": 3,
@@ -21,6 +23,7 @@
 // describe() gives the norm of the synthesise-then-reduce controller of the
 // same order on the same plant: the value to beat.
 #include <filesystem>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "framework/core/problem.hpp"
@@ -50,6 +53,11 @@ class FixedOrderHinfProblem : public Problem {
   Bounds bounds_;
   std::string source_;
   double reference_norm_ = 0.0;  // synthesis then reduction to the same order
+  std::string reference_method_;
 };
+
+// Referring to it keeps the problem's registration in a program linked with
+// the static robust library (the linker drops unreferenced objects).
+void link_fixed_order_hinf();
 
 }  // namespace hystbench

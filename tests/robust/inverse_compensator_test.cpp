@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <ostream>
 #include <numbers>
 
 #include "framework/core/error.hpp"
@@ -33,6 +34,9 @@ struct Family {
   nlohmann::json values;
   bool strictly_increasing;
 };
+
+// gtest prints a parameter in failure messages and test listings.
+void PrintTo(const Family& f, std::ostream* os) { *os << f.effects; }
 
 class InverseFamily : public testing::TestWithParam<Family> {};
 

@@ -57,7 +57,7 @@ TEST(TrackCommand, Table2OnAShortRunWithEveryController) {
   ASSERT_EQ(t["rows"].size(), 12u);
   std::map<std::string, double> re;
   for (const auto& row : t["rows"]) {
-    if (row["signal"] == "20 Hz amplitude 3") {
+    if (row["signal"] == "20 Hz amplitude 3 offset 3") {
       EXPECT_TRUE(contains(row["status"].get<std::string>(), "out of range")) << row.dump();
       continue;
     }

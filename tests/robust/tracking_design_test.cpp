@@ -88,20 +88,19 @@ struct ReferenceDesign {
   ControllerDesign design;
 };
 
-const ReferenceDesign& reference_design() {
+const ReferenceDesign& reference() {
   static const ReferenceDesign r = [] {
-    const double wn = 2.0 * std::numbers::pi * 1260.0, zeta = 0.6, ts = 1e-4;
     ReferenceDesign d;
-    d.continuous = robust::transfer_function({wn * wn}, {1.0, 2.0 * zeta * wn, wn * wn});
-    d.discrete = robust::zero_order_hold(d.continuous, ts);
-    d.design = design_controller(d.continuous, d.discrete, ts, seed_uncertainty_weight(), DesignOptions{});
+    d.continuous = reference_dynamics();
+    d.discrete = robust::zero_order_hold(d.continuous, 1e-4);
+    d.design = hystbench::reference_design();
     return d;
   }();
   return r;
 }
 
 TEST(TrackingDesign, MixedSensitivityMatchesTheReferenceDesign) {
-  const ControllerDesign& d = reference_design().design;
+  const ControllerDesign& d = reference().design;
   EXPECT_NEAR(d.gamma_min, 0.50984, 0.50984 * 1e-3);
   EXPECT_EQ(d.full.states(), 5);
   EXPECT_NEAR(d.full_check.norm, 0.52204, 0.52204 * 2e-3);
@@ -116,7 +115,7 @@ TEST(TrackingDesign, MixedSensitivityMatchesTheReferenceDesign) {
 }
 
 TEST(TrackingDesign, LoopStaysStableAtTheEdgeOfTheUncertaintyBound) {
-  const ControllerDesign& d = reference_design().design;
+  const ControllerDesign& d = reference().design;
   EXPECT_LT(d.full_check.norm, 1.0);  // robust stability for |Δ| ≤ |Wa| by the small-gain theorem
   EXPECT_TRUE(d.full_check.edges_stable);
   EXPECT_TRUE(d.reduced_check.edges_stable);
@@ -125,7 +124,7 @@ TEST(TrackingDesign, LoopStaysStableAtTheEdgeOfTheUncertaintyBound) {
   for (double theta : {-0.9, -0.5, 0.5, 0.9}) {
     StateSpace scaled = wa;
     scaled.C *= theta, scaled.D *= theta;
-    EXPECT_LT(robust::feedback_stability_margin(robust::parallel(reference_design().continuous, scaled), d.full,
+    EXPECT_LT(robust::feedback_stability_margin(robust::parallel(reference().continuous, scaled), d.full,
                                                 TimeDomain::Continuous),
               0.0)
         << theta;
@@ -135,7 +134,7 @@ TEST(TrackingDesign, LoopStaysStableAtTheEdgeOfTheUncertaintyBound) {
 TEST(TrackingDesign, BalancedTruncationKeepsItsAPrioriBound) {
   DesignOptions o;
   o.reduction = "balanced";
-  const ReferenceDesign& r = reference_design();
+  const ReferenceDesign& r = reference();
   const ControllerDesign d = design_controller(r.continuous, r.discrete, 1e-4, seed_uncertainty_weight(), o);
   EXPECT_EQ(d.reduction, "balanced");
   EXPECT_LE(d.reduction_error, d.reduction_bound * (1 + 1e-6));
@@ -143,7 +142,7 @@ TEST(TrackingDesign, BalancedTruncationKeepsItsAPrioriBound) {
 }
 
 TEST(TrackingDesign, StochasticTruncationKeepsItsRelativeBound) {
-  const ControllerDesign& d = reference_design().design;
+  const ControllerDesign& d = reference().design;
   // The relative bound of the stable part, weighed by the spectral factor:
   // on the frequencies where |K| dominates β, |K − Kr|/|K| stays below it.
   EXPECT_GT(d.reduction_bound, 0.0);

@@ -1,0 +1,26 @@
+# tracking_10-Hz-amplitude-15-offset-15.gp: reference, output and error at 10 Hz amplitude 15 offset 15 with 2DOF Hinf (3rd order)
+#
+# Reads tracking_10-Hz-amplitude-15-offset-15.csv.
+# To re-render after editing, run inside this folder:
+#     gnuplot tracking_10-Hz-amplitude-15-offset-15.gp
+# It writes tracking_10-Hz-amplitude-15-offset-15.svg, tracking_10-Hz-amplitude-15-offset-15.png and tracking_10-Hz-amplitude-15-offset-15.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set datafile separator ","
+set key outside bottom center horizontal
+set grid
+set title "10 Hz amplitude 15 offset 15, 2DOF Hinf (3rd order)" noenhanced
+set xlabel "time in the scored window (s)"
+set ylabel "displacement (µm)" noenhanced
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "tracking_10-Hz-amplitude-15-offset-15.".ext
+  plot "tracking_10-Hz-amplitude-15-offset-15.csv" using 1:2 with lines lw 2 lc rgb "black" title "reference", \
+       "tracking_10-Hz-amplitude-15-offset-15.csv" using 1:3 with lines lw 1.5 dt 2 lc rgb "#d62728" title "output", \
+       "tracking_10-Hz-amplitude-15-offset-15.csv" using 1:4 with lines lw 1.5 lc rgb "#1f77b4" title "error"
+}
+unset output
