@@ -2,12 +2,14 @@
 #   make demo   install what is missing, build, run the default experiment
 #   make test   install what is missing, build, run the whole test suite
 #   make paper  build, then regenerate results/paper/ (the seed papers' comparisons)
+#   make test-quick  build, then the tests labelled unit and integration (not the
+#                    slow hidden-effect cases): about a minute, for the edit loop
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # Keeps the inner build's output free of make's directory chatter.
 CMAKE_BUILD = env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL cmake --build $(BUILD) -j $(JOBS)
 
-.PHONY: demo test paper configure deps clean
+.PHONY: demo test test-quick paper configure deps clean
 
 deps:
 	@scripts/install-deps.sh
@@ -22,6 +24,10 @@ demo: configure
 test: configure
 	@$(CMAKE_BUILD)
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-quick: configure
+	@$(CMAKE_BUILD)
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE discovery
 
 paper: configure
 	@$(CMAKE_BUILD) --target hystbench
