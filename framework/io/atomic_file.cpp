@@ -40,4 +40,14 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& con
   if (ec) throw InputError(path.string() + ": cannot replace the file: " + ec.message());
 }
 
+std::vector<std::filesystem::path> write_files_atomic(
+    const std::filesystem::path& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::filesystem::path> out;
+  for (const auto& [name, text] : files) {
+    write_file_atomic(dir / name, text);
+    out.push_back(dir / name);
+  }
+  return out;
+}
+
 }  // namespace hystbench

@@ -139,12 +139,7 @@ std::vector<std::filesystem::path> write_svr_report(const std::filesystem::path&
       {"table.csv", table_csv(x, r)},
       {"svr.json", svr_json(x, r, threads).dump(2) + "\n"}};
   if (x.stage2) files.emplace_back("aic.csv", aic_csv(r.arx));
-  std::vector<std::filesystem::path> out;
-  for (const auto& [name, text] : files) {
-    write_file_atomic(dir / name, text);
-    out.push_back(dir / name);
-  }
-  return out;
+  return write_files_atomic(dir, files);
 }
 
 }  // namespace hystbench

@@ -71,7 +71,7 @@ double InverseCompensator::step(double w_desired) {
     stats_.max_residual = std::max(stats_.max_residual, std::abs(fu));
     stats_.sum_squared_residual += fu * fu;
   }
-  stats_.max_iterations = std::max(stats_.max_iterations, evaluations);
+  stats_.max_evaluations = std::max(stats_.max_evaluations, evaluations);
   model_->step_front(u);
   return u;
 }

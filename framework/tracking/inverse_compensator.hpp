@@ -27,7 +27,7 @@ struct InverseStatistics {
   long saturated = 0;            // samples whose w* lay outside what [u_min, u_max] reaches
   double max_residual = 0.0;     // max |w(u) − w*| over the other samples, output units
   double sum_squared_residual = 0.0;
-  int max_iterations = 0;        // the most front evaluations one sample needed
+  int max_evaluations = 0;       // the most front evaluations one sample needed
   double rms_residual() const;
 };
 

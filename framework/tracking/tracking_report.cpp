@@ -170,7 +170,7 @@ nlohmann::json tracking_json(const TrackingExperiment& x, const TrackingResults&
                       {"saturated_samples", inv.saturated},
                       {"saturated_scored_samples", row.run.saturated_in_window},
                       {"samples", inv.samples},
-                      {"max_evaluations", inv.max_iterations}}}});
+                      {"max_evaluations", inv.max_evaluations}}}});
   }
   return {{"experiment", x.source}, {"rows", rows}, {"seconds", r.seconds},
           {"provenance", provenance(threads, x.seed)}};
@@ -185,12 +185,7 @@ std::vector<std::filesystem::path> write_tracking_report(const std::filesystem::
       {"table.md", table::markdown(make_table(x, r, Format::Markdown))},
       {"table.tex", table::latex(make_table(x, r, Format::Latex))},
       {"table.csv", table_csv(r)}};
-  std::vector<std::filesystem::path> out;
-  for (const auto& [name, text] : files) {
-    write_file_atomic(dir / name, text);
-    out.push_back(dir / name);
-  }
-  return out;
+  return write_files_atomic(dir, files);
 }
 
 }  // namespace hystbench

@@ -1,7 +1,6 @@
 #include "problems/robust/fixed_order_hinf.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
