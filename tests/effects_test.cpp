@@ -17,6 +17,7 @@
 #include "framework/model/effect.hpp"
 #include "framework/model/model.hpp"
 #include "framework/model/model_data.hpp"
+#include "problems/hammerstein/batched_sse.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"
 #include "tests/active_point.hpp"
 
@@ -222,26 +223,57 @@ TEST(EffectSecondMode, MixesWithTheFirstModeByParticipation) {
   EXPECT_LT((both - (0.7 * first + 0.3 * second)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
-TEST(EffectChain, ReproducesTheSeedHammersteinModel) {
-  // The seed's 13 parameters map onto gain + hysteresis, asymmetry, msd, arx:
-  // the chain's blocks have unit static gain, so the seed's static gains
-  // 1/K (MSD) and (a + b)/(1 + c + d) (ARX) move into gain, A and d2.
-  const HammersteinParams s{0.4, 0.0015, 0.0005, 0.2, 0.15, 6e-5, 1.583e-5,
-                            0.001194, 1.0, 0.2, 0.09, -1.0, 0.29};
-  const double Ts = 1e-3;
-  const Measurement m = test_record(600.0);
-  const Eigen::VectorXd seed = simulate_hammerstein(s, m.u, Ts, BoucWenForm::Increment);
+// The seed's 13 parameters mapped onto gain + hysteresis, asymmetry, msd,
+// arx: the chain's blocks have unit static gain, so the seed's static gains
+// 1/K (MSD) and (a + b)/(1 + c + d) (ARX) move into gain, A and d2.
+Eigen::VectorXd chain_parameters(const HammersteinParams& s) {
   const double arx_gain = (s.a + s.b) / (1.0 + s.c + s.d);
   const double g = arx_gain / s.K;
   const double omega = std::sqrt(s.K / s.M), zeta = s.D / (2.0 * std::sqrt(s.K * s.M));
-  const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
-  const Eigen::VectorXd x = params({s.d1 * g, s.alpha * s.L * g, s.beta, s.gamma, s.d2 * g,
-                                    2.0 * std::numbers::pi / omega, zeta, s.c, s.d, s.a / arx_gain,
-                                    s.b / arx_gain});
+  return params({s.d1 * g, s.alpha * s.L * g, s.beta, s.gamma, s.d2 * g,
+                 2.0 * std::numbers::pi / omega, zeta, s.c, s.d, s.a / arx_gain, s.b / arx_gain});
+}
+
+const HammersteinParams kSeedExample{0.4, 0.0015, 0.0005, 0.2, 0.15, 6e-5, 1.583e-5,
+                                     0.001194, 1.0, 0.2, 0.09, -1.0, 0.29};
+
+TEST(EffectChain, ReproducesTheSeedHammersteinModel) {
+  const double Ts = 1e-3;
+  const Measurement m = test_record(600.0);
+  const Eigen::VectorXd seed = simulate_hammerstein(kSeedExample, m.u, Ts, BoucWenForm::Increment);
   ModelData d(m, SignalScales{});
   Eigen::VectorXd y;
-  ASSERT_TRUE(model.simulate(x, d, y));
+  ASSERT_TRUE(Model::parse("hysteresis,asymmetry,msd,arx").simulate(chain_parameters(kSeedExample), d, y));
   EXPECT_LT((y - seed).norm(), 1e-10 * seed.norm());
+}
+
+// The 13-parameter problem keeps its own batched kernel for speed; it must
+// score every candidate as the effect chain does (increment form).
+TEST(EffectChain, TheSeedProblemsBatchedKernelScoresAsTheChain) {
+  const double Ts = 1e-3;
+  Measurement m = test_record(600.0);
+  m.y = simulate_hammerstein(kSeedExample, m.u, Ts, BoucWenForm::Increment);
+  for (Eigen::Index k = 0; k < m.y.size(); ++k) m.y[k] += 0.5 * std::sin(0.37 * double(k));
+  std::vector<HammersteinParams> candidates(11, kSeedExample);
+  for (std::size_t i = 1; i < candidates.size(); ++i) {
+    HammersteinParams& c = candidates[i];
+    c.beta *= 1.0 + 0.1 * double(i);
+    c.d2 *= 1.0 - 0.05 * double(i);
+    c.D *= 1.0 + 0.2 * double(i);
+    c.a *= 1.0 + 0.01 * double(i);
+  }
+  Eigen::MatrixXd X(HammersteinParams::kCount, Eigen::Index(candidates.size()));
+  for (std::size_t i = 0; i < candidates.size(); ++i) X.col(Eigen::Index(i)) = candidates[i].to_vector();
+  Eigen::VectorXd batched(X.cols());
+  hammerstein_sse_batched(X, m.u, m.y, Ts, BoucWenForm::Increment, batched);
+  const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
+  const ModelData d(m, SignalScales{});
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    Eigen::VectorXd y;
+    ASSERT_TRUE(model.simulate(chain_parameters(candidates[i]), d, y)) << "candidate " << i;
+    const double chain = (m.y - y).squaredNorm();
+    EXPECT_NEAR(batched[Eigen::Index(i)], chain, 1e-9 * chain) << "candidate " << i;
+  }
 }
 
 // Columns of the finite-difference Jacobian of the model output, each

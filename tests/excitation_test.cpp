@@ -7,7 +7,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
-#include "problems/hammerstein/excitation.hpp"
+#include "framework/io/excitation.hpp"
 
 namespace hystbench {
 namespace {

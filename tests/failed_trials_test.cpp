@@ -12,7 +12,7 @@
 #include "framework/core/registry.hpp"
 #include "framework/harness/campaign.hpp"
 #include "framework/harness/experiment.hpp"
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 #include "framework/report/results_folder.hpp"
 #include "framework/report/trial_statistics.hpp"
 #include "problems/functions/function_problem.hpp"

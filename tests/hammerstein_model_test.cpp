@@ -1,5 +1,5 @@
 // The seed model against values computed by hand from
-// docs/design.md#hammerstein-seed-model.
+// docs/models.md#hammerstein-seed-model.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The hidden-effect cases of the discovery workflow
-// (docs/design.md#discovery-workflow), read
+// (docs/discovery.md#discovery-workflow), read
 // from benchmarks/experiments/hidden_effects.json: data are simulated from a
 // known model that has one effect more than the start model (two in the
 // two-effect case, none in the `none` case). Each case asserts that

@@ -456,20 +456,3 @@ TEST(Measurement, WritesHeaderCommentsAndNoTempFile) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
 }
 
-// ---- the real data set ---------------------------------------------------
-
-TEST(Measurement, ReadsBoucWenTrainingFile) {
-  // The benchmark data are not shipped (see results/boucwen/README.md): the
-  // test runs where HYSTBENCH_BOUCWEN_DATA names the folder that holds them.
-  const char* folder = std::getenv("HYSTBENCH_BOUCWEN_DATA");
-  if (!folder) GTEST_SKIP() << "HYSTBENCH_BOUCWEN_DATA is not set";
-  const fs::path p = fs::path(folder) / "train_multisine_dynonet.csv";
-  if (!fs::exists(p)) GTEST_SKIP() << "Bouc-Wen data not present at " << p;
-  const Measurement m = read_measurement(p, ColumnMap::parse("t=t_s,u=u_N,y=y_m"));
-  EXPECT_EQ(m.size(), 40960);
-  EXPECT_NEAR(m.sample_time, 1.0 / 750, 1e-12);
-  EXPECT_EQ(m.t[0], 0.0);
-  EXPECT_TRUE(m.segment.empty());
-  EXPECT_TRUE(m.u.allFinite());
-  EXPECT_TRUE(m.y.allFinite());
-}

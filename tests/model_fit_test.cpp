@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "framework/core/error.hpp"
 
@@ -109,6 +110,24 @@ TEST(ModelFit, FitRecordRoundTripsBitForBit) {
   EXPECT_EQ(back.scales.y, s.model_data.scales.y);
   EXPECT_EQ(back.data.y_unit, "µm");
   EXPECT_EQ(r.parameters_json()[0]["unit"], "µm/V");
+}
+
+// A diverged fit's errors are infinite; JSON writes them as null, and a
+// checkpoint read back must not turn them into a perfect 0.
+TEST(ModelFit, ErrorsOfADivergedFitStayInfiniteThroughJson) {
+  FitErrors diverged;
+  diverged.stable = false;
+  diverged.n_estimation = 80;
+  diverged.n_heldout = 20;
+  diverged.rmse_estimation = diverged.rmse_heldout = std::numeric_limits<double>::infinity();
+  const FitErrors back = FitErrors::from_json(nlohmann::json::parse(diverged.to_json().dump()));
+  EXPECT_FALSE(back.stable);
+  EXPECT_EQ(back.rmse_estimation, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(back.rmse_heldout, std::numeric_limits<double>::infinity());
+
+  FitErrors nothing_held_out = diverged;
+  nothing_held_out.n_heldout = 0;
+  EXPECT_EQ(FitErrors::from_json(nothing_held_out.to_json()).rmse_heldout, 0.0);
 }
 
 TEST(ModelFit, FitRecordKeepsACausalInputHoldAndReadsOldFilesAsSpline) {

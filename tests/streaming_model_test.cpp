@@ -1,4 +1,4 @@
-// Models run sample by sample (StreamingModel, docs/design.md#streaming-models):
+// Models run sample by sample (StreamingModel, docs/models.md#streaming-models):
 // the stream gives what the batch simulation gives under the same causal
 // input hold, for every catalog effect and for chains of them; no output
 // moves when later inputs change; the spline hold is refused; divergence,

@@ -82,6 +82,21 @@ TEST(SwarmGaJaya, GaApproachesTheSphereOptimumSlowly) {
   EXPECT_LT(best[4], 0.1);
 }
 
+TEST(SwarmGaJaya, GaWithPlusReplacementConvergesFurther) {
+  // Pooling parents and children and keeping the best N (pagmo's sga
+  // reinsertion) keeps the mutation noise out of the population: the same
+  // operators, experiment and trials as the test above end about fifteen
+  // times lower. Measured best values, trials 0-4: 1.8e-4, 5.5e-4, 7.3e-4,
+  // 1.0e-3, 1.3e-3 (median 7.3e-4, against 1.1e-2 for generational).
+  FunctionProblem sphere("sphere", 10);
+  const Algorithm ga{"ga", {{"replacement", "plus"}}};
+  std::vector<double> best;
+  for (long trial = 0; trial < 5; ++trial) best.push_back(run(sphere, ga, 50000, trial).best);
+  std::sort(best.begin(), best.end());
+  EXPECT_LT(best[2], 2e-3);
+  EXPECT_LT(best[4], 1e-2);
+}
+
 TEST(SwarmGaJaya, ImproveOnRastrigin) {
   // A uniform point of rastrigin-5 scores about 90; the best of the
   // initial population about 40.
@@ -106,6 +121,8 @@ TEST(SwarmGaJaya, EvaluationsPerIteration) {
   // GA: N initial, then N - E offspring; hybrid Jaya: two phases of NP each.
   EXPECT_EQ(evaluations_after_iterations({"ga", nlohmann::json::object()}, 10), 100 + 10 * 98);
   EXPECT_EQ(evaluations_after_iterations({"ga", {{"np", 21}, {"elites", 0}}}, 3), 21 + 3 * 21);
+  // Plus replacement breeds N children whatever the elites.
+  EXPECT_EQ(evaluations_after_iterations({"ga", {{"replacement", "plus"}}}, 10), 100 + 10 * 100);
   EXPECT_EQ(evaluations_after_iterations({"pso", nlohmann::json::object()}, 10), 40 + 10 * 40);
   EXPECT_EQ(evaluations_after_iterations({"jaya", nlohmann::json::object()}, 10), 50 + 10 * 50);
   EXPECT_EQ(evaluations_after_iterations({"hybrid_jaya", nlohmann::json::object()}, 10),
@@ -119,6 +136,7 @@ TEST(SwarmGaJaya, SwitchableOperatorsAndTopologiesWork) {
       {"ga", {{"crossover", "arithmetic"}}},
       {"ga", {{"mutation", "gaussian"}}},
       {"ga", {{"tournament", 4}, {"elites", 0}}},
+      {"ga", {{"replacement", "plus"}, {"crossover", "blx-alpha"}}},
       {"pso", {{"topology", "ring"}}},
       {"pso", {{"bounds", "reflect"}}},
       {"pso", {{"variant", "constriction"}, {"topology", "ring"}, {"bounds", "reflect"}}}};

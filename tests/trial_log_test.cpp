@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.hpp"
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 #include "tests/temp_dir.hpp"
 
 namespace hystbench {

@@ -34,12 +34,17 @@ pagmo::algorithm make_pagmo_algorithm(const PagmoRun& run) {
   if (name == "sga")
     return pagmo::algorithm{pagmo::sga(gen, .9, 1., .02, 1., 2u, "exponential", "polynomial",
                                        "tournament", seed)};
+  if (name == "sga-sbx") {
+    if (run.dimension == 0) throw std::invalid_argument("sga-sbx needs the problem's dimension");
+    return pagmo::algorithm{pagmo::sga(gen, .9, 20., 1. / run.dimension, 20., 2u, "sbx",
+                                       "polynomial", "tournament", seed)};
+  }
   // force_bounds: our problem's box is part of the problem, as in our CMA-ES.
   if (name == "cmaes")
     return pagmo::algorithm{pagmo::cmaes(gen, -1, -1, -1, -1, 0.5, kNoTolerance, kNoTolerance, false,
                                          true, seed)};
   throw std::invalid_argument("unknown pagmo algorithm \"" + name +
-                              "\"; known: de, sade, de1220, pso, sga, cmaes");
+                              "\"; known: de, sade, de1220, pso, sga, sga-sbx, cmaes");
 }
 
 }  // namespace hystbench::peer

@@ -16,12 +16,15 @@ namespace hystbench::peer {
 
 // One seeded run of a pagmo algorithm: "de", "sade", "de1220", "pso", "sga"
 // or "cmaes", with pagmo's default settings except that the tolerance stops
-// are off (the run spends its generations) and CMA-ES keeps to the box.
+// are off (the run spends its generations) and CMA-ES keeps to the box;
+// "sga-sbx" is sga with our GA's default operators (SBX eta 20, polynomial
+// mutation eta 20 at rate 1 / dimension, binary tournament).
 struct PagmoRun {
   std::string algorithm;
   unsigned population = 0;
   unsigned generations = 0;
   unsigned seed = 0;
+  unsigned dimension = 0;  // needed by "sga-sbx" only
 };
 
 // Throws std::invalid_argument for an unknown algorithm name.

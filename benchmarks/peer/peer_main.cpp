@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "benchmarks/peer/equal_budget.hpp"
+#include "benchmarks/peer/ga_replacement.hpp"
 #include "benchmarks/peer/overhead.hpp"
 #include "benchmarks/peer/peer_report.hpp"
 #include "framework/core/error.hpp"
@@ -26,6 +27,8 @@ struct Options {
   bool skip_protocol = false;
   int threads = static_cast<int>(std::thread::hardware_concurrency());
   long overhead_evaluations = 200000;
+  long ga_evaluations = 50000;
+  long ga_trials = 11;
   std::string out = "results/performance";
 };
 
@@ -45,6 +48,11 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--overhead-evaluations", o.overhead_evaluations,
                  "evaluations per trial on the trivial fitness")
       ->capture_default_str()->check(CLI::Range(1000L, 1000000000L));
+  app.add_option("--ga-evaluations", o.ga_evaluations,
+                 "evaluations per trial of the GA replacement part (sphere-10)")
+      ->capture_default_str()->check(CLI::Range(1000L, 1000000000L));
+  app.add_option("--ga-trials", o.ga_trials, "seeded trials per GA of that part")
+      ->capture_default_str()->check(CLI::Range(1L, 10000L));
   app.add_option("--out", o.out, "folder for peer.md and peer.csv")->capture_default_str();
 }
 
@@ -82,6 +90,10 @@ PeerReport compare(const Options& o, const std::string& command) {
   log("overhead on a trivial fitness");
   const auto overhead = overhead_rows(problem->dimension(), o.overhead_evaluations, 3, o.seed);
   report.rows.insert(report.rows.end(), overhead.begin(), overhead.end());
+  log("GA replacement on sphere-10 (" + std::to_string(o.ga_evaluations) + " evaluations x " +
+      std::to_string(o.ga_trials) + " trials)");
+  const auto ga = ga_replacement_rows(o.ga_evaluations, o.ga_trials, o.seed);
+  report.rows.insert(report.rows.end(), ga.begin(), ga.end());
   report.load_after = load_average();
   return report;
 }

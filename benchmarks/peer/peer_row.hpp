@@ -9,7 +9,7 @@
 namespace hystbench::peer {
 
 struct PeerRow {
-  std::string section;    // "equal budget", "MEDE Table 1 protocol", "overhead"
+  std::string section;    // "equal budget", "MEDE Table 1 protocol", "overhead", "ga replacement"
   std::string framework;  // "hystbench" or "pagmo"
   std::string algorithm;
   std::string settings;   // population and anything not at its default

@@ -10,7 +10,8 @@
 namespace hystbench::cli {
 namespace {
 
-// Name, summary, parameters and citation of every entry of a plugin registry.
+// Name, summary, parameters and (where the kind has one) citation of every
+// entry of a plugin registry.
 template <class Registry>
 void print_plugins(const std::string& title) {
   std::cout << title;
@@ -18,7 +19,8 @@ void print_plugins(const std::string& title) {
     std::cout << "\n  " << info->name << " - " << info->summary << "\n";
     for (const auto& p : info->params)
       std::cout << "      " << p.name << ": " << p.describe_range() << "\n          " << p.doc << "\n";
-    if (!info->citation.empty()) std::cout << "    Citation: " << info->citation << "\n";
+    if constexpr (requires { info->citation; })
+      if (!info->citation.empty()) std::cout << "    Citation: " << info->citation << "\n";
   }
 }
 
@@ -28,12 +30,7 @@ void print_optimizers() {
 }
 
 void print_problems() {
-  std::cout << "\nProblems (\"problem\": {\"type\": NAME, ...}):\n";
-  for (const auto* info : ProblemRegistry::instance().all()) {
-    std::cout << "\n  " << info->name << " - " << info->summary << "\n      keys:";
-    for (const auto& k : info->keys) std::cout << " " << k;
-    std::cout << "\n";
-  }
+  print_plugins<ProblemRegistry>("\nProblems (\"problem\": {\"type\": NAME, ...}):\n");
 }
 
 void print_effects() {

@@ -20,7 +20,7 @@
 #include "framework/harness/trial_range.hpp"
 #include "framework/harness/trial_runner.hpp"
 #include "framework/io/measurement.hpp"
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 #include "framework/report/results_folder.hpp"
 #include "framework/report/resume.hpp"
 #include "framework/report/trial_statistics.hpp"

@@ -7,20 +7,15 @@
 #include "framework/cli/input_hold_option.hpp"
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/threads_option.hpp"
+#include "framework/core/text.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/json_file.hpp"
-#include "problems/hammerstein/synthetic_data.hpp"
+#include "problems/hammerstein/hammerstein_synthetic_data.hpp"
 
 namespace hystbench::cli {
 namespace {
-
-std::string number_text(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 struct SimulateOptions {
   std::string params, excitation, out, form = "increment", input_unit, output_unit, model;

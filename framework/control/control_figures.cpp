@@ -28,10 +28,6 @@ std::vector<Curve> curves(const ControlResults& r) {
   return out;
 }
 
-// Six significant digits: these files feed figures, not further computation
-// (control.json and the tables hold the numbers).
-std::string plotted(double x) { return std::isfinite(x) ? format_number("%.6g", x) : csv_number(x); }
-
 double at(const std::vector<double>& v, std::size_t n) {
   return n < v.size() ? v[n] : std::numeric_limits<double>::quiet_NaN();
 }
@@ -47,10 +43,10 @@ std::string traces_csv(const std::vector<Curve>& cs, const ControlExperiment& x,
   std::vector<std::vector<double>> rms;
   for (const auto& c : cs) rms.push_back(moving_rms(c.trace->true_error, std::lround(x.loop.sample_rate_hz)));
   for (long n = decimate - 1; n < x.loop.samples(); n += decimate) {
-    out += plotted(double(n) / x.loop.sample_rate_hz);
+    out += figure_number(double(n) / x.loop.sample_rate_hz);
     for (std::size_t i = 0; i < cs.size(); ++i) {
-      out += "," + plotted(20.0 * std::log10(at(rms[i], n) / reference_rms));
-      out += "," + plotted(at(cs[i].trace->step, n)) + "," + plotted(at(cs[i].trace->weight_norm, n));
+      out += "," + figure_number(20.0 * std::log10(at(rms[i], n) / reference_rms));
+      out += "," + figure_number(at(cs[i].trace->step, n)) + "," + figure_number(at(cs[i].trace->weight_norm, n));
     }
     out += "\n";
   }
@@ -75,9 +71,9 @@ std::string spectrum_csv(const std::vector<Curve>& cs, const ControlExperiment& 
   out += "\n";
   // The uncontrolled run never stops early, so its grid is the full one.
   for (std::size_t k = 0; k < spectra[0].frequency.size(); ++k) {
-    out += plotted(spectra[0].frequency[k]);
+    out += figure_number(spectra[0].frequency[k]);
     for (const auto& s : spectra)
-      out += "," + plotted(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN);
+      out += "," + figure_number(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN);
     out += "\n";
   }
   return out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
@@ -44,6 +45,18 @@ void check_value(const ParamSpec& spec, const nlohmann::json& value,
         throw InputError(key + " = " + value.dump() + " is not valid; choose one of: " +
                          join(spec.choices));
       return;
+    case ParamSpec::Type::Text:
+      if (!value.is_string()) throw InputError(key + ": expected a string, got " + value.dump());
+      return;
+    case ParamSpec::Type::Object:
+      if (!value.is_object()) throw InputError(key + ": expected a JSON object, got " + value.dump());
+      return;
+    case ParamSpec::Type::Array:
+      if (!value.is_array()) throw InputError(key + ": expected a JSON array, got " + value.dump());
+      return;
+    case ParamSpec::Type::Range:
+      read_range(value, key);
+      return;
   }
 }
 
@@ -69,19 +82,55 @@ ParamSpec ParamSpec::boolean(std::string name, bool default_value, std::string d
   return {std::move(name), Type::Boolean, default_value, 0, 0, {}, std::move(doc)};
 }
 
-std::string ParamSpec::describe_range() const {
-  const std::string def = default_value.is_null() ? "auto" : default_value.dump();
-  switch (type) {
-    case Type::Integer:
-      return "integer in [" + number_text(min) + ", " + number_text(max) + "], default " + def;
-    case Type::Real:
-      return "real in [" + number_text(min) + ", " + number_text(max) + "], default " + def;
-    case Type::Boolean:
-      return "true/false, default " + def;
-    case Type::Choice:
-      return "one of {" + join(choices) + "}, default " + def;
+ParamSpec ParamSpec::text(std::string name, nlohmann::json default_value, std::string doc) {
+  return {std::move(name), Type::Text, std::move(default_value), 0, 0, {}, std::move(doc)};
+}
+
+ParamSpec ParamSpec::object(std::string name, std::string doc) {
+  return {std::move(name), Type::Object, nullptr, 0, 0, {}, std::move(doc)};
+}
+
+ParamSpec ParamSpec::array(std::string name, std::string doc) {
+  return {std::move(name), Type::Array, nullptr, 0, 0, {}, std::move(doc)};
+}
+
+ParamSpec ParamSpec::range(std::string name, double lower, double upper, std::string doc) {
+  return {std::move(name), Type::Range, {lower, upper}, 0, 0, {}, std::move(doc)};
+}
+
+ParamSpec& ParamSpec::require() {
+  required = true;
+  return *this;
+}
+
+namespace {
+
+std::string interval(double lo, double hi) {
+  const double huge = std::numeric_limits<double>::max();
+  return lo == -huge && hi == huge ? "" : " in [" + number_text(lo) + ", " + number_text(hi) + "]";
+}
+
+std::string kind_of(const ParamSpec& p) {
+  switch (p.type) {
+    case ParamSpec::Type::Integer: return "integer" + interval(p.min, p.max);
+    case ParamSpec::Type::Real: return "real" + interval(p.min, p.max);
+    case ParamSpec::Type::Boolean: return "true/false";
+    case ParamSpec::Type::Choice: return "one of {" + join(p.choices) + "}";
+    case ParamSpec::Type::Text: return "text";
+    case ParamSpec::Type::Object: return "JSON object";
+    case ParamSpec::Type::Array: return "JSON array";
+    case ParamSpec::Type::Range: return "[lower, upper]";
   }
-  return def;
+  return "";
+}
+
+}  // namespace
+
+std::string ParamSpec::describe_range() const {
+  if (required) return kind_of(*this) + ", required";
+  const bool structured = type == Type::Text || type == Type::Object || type == Type::Array;
+  if (default_value.is_null()) return kind_of(*this) + (structured ? ", optional" : ", default auto");
+  return kind_of(*this) + ", default " + default_value.dump();
 }
 
 bool Params::is_auto(const std::string& key) const { return at(key).is_null(); }
@@ -89,6 +138,18 @@ int Params::integer(const std::string& key) const { return at(key).get<int>(); }
 double Params::real(const std::string& key) const { return at(key).get<double>(); }
 std::string Params::text(const std::string& key) const { return at(key).get<std::string>(); }
 bool Params::boolean(const std::string& key) const { return at(key).get<bool>(); }
+std::pair<double, double> Params::range(const std::string& key) const {
+  return {at(key)[0].get<double>(), at(key)[1].get<double>()};
+}
+
+std::pair<double, double> read_range(const nlohmann::json& value, const std::string& key) {
+  const bool numbers = value.is_array() && value.size() == 2 && value[0].is_number() &&
+                       value[1].is_number() && std::isfinite(value[0].get<double>()) &&
+                       std::isfinite(value[1].get<double>());
+  if (!numbers || !(value[0].get<double>() < value[1].get<double>()))
+    throw InputError(key + " = " + value.dump() + ": give [lower, upper] with lower < upper");
+  return {value[0].get<double>(), value[1].get<double>()};
+}
 
 const nlohmann::json& Params::at(const std::string& key) const {
   auto it = values_.find(key);
@@ -117,6 +178,8 @@ Params validate_params(const std::vector<ParamSpec>& specs, const nlohmann::json
   nlohmann::json values = nlohmann::json::object();
   for (const auto& spec : specs) {
     auto it = input.find(spec.name);
+    if (spec.required && (it == input.end() || it->is_null()))
+      throw InputError(where + "." + spec.name + ": missing; give " + spec.doc);
     if (it == input.end() || (it->is_null() && spec.default_value.is_null())) {
       values[spec.name] = spec.default_value;
       continue;

@@ -5,12 +5,15 @@
 // (naming the range) before the plugin ever sees them.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hystbench {
 
 struct ParamSpec {
-  enum class Type { Integer, Real, Choice, Boolean };
+  // Text, Object and Array are for problems, whose options include file
+  // names and structured values that the problem reads itself.
+  enum class Type { Integer, Real, Choice, Boolean, Text, Object, Array, Range };
 
   std::string name;
   Type type = Type::Real;
@@ -20,6 +23,7 @@ struct ParamSpec {
   double max = 0.0;
   std::vector<std::string> choices;
   std::string doc;
+  bool required = false;  // a missing key is an error, not the default
 
   static ParamSpec integer(std::string name, nlohmann::json default_value,
                            double min, double max, std::string doc);
@@ -28,6 +32,15 @@ struct ParamSpec {
   static ParamSpec choice(std::string name, std::string default_value,
                           std::vector<std::string> choices, std::string doc);
   static ParamSpec boolean(std::string name, bool default_value, std::string doc);
+  // A string; null default: absent unless given.
+  static ParamSpec text(std::string name, nlohmann::json default_value, std::string doc);
+  // A JSON object or array, absent (null) unless given.
+  static ParamSpec object(std::string name, std::string doc);
+  static ParamSpec array(std::string name, std::string doc);
+  // An interval [lower, upper] of finite numbers with lower < upper.
+  static ParamSpec range(std::string name, double lower, double upper, std::string doc);
+  // The same spec with a missing key refused, its doc naming what to give.
+  ParamSpec& require();
 
   // "integer in [4, 100000], default auto" — used by `hystbench list`.
   std::string describe_range() const;
@@ -44,6 +57,9 @@ class Params {
   double real(const std::string& key) const;
   std::string text(const std::string& key) const;
   bool boolean(const std::string& key) const;
+  std::pair<double, double> range(const std::string& key) const;
+  // An Object or Array parameter as given (null when absent).
+  const nlohmann::json& value(const std::string& key) const { return at(key); }
   const nlohmann::json& json() const { return values_; }
 
  private:
@@ -64,6 +80,9 @@ double optional_number(const nlohmann::json& object, const std::string& key, dou
                        double lo, double hi, const std::string& where);
 bool optional_flag(const nlohmann::json& object, const std::string& key, bool fallback,
                    const std::string& where);
+
+// [lower, upper] of finite numbers with lower < upper, or InputError naming `key`.
+std::pair<double, double> read_range(const nlohmann::json& value, const std::string& key);
 
 // Throws InputError if `object` has a key not in `allowed`, listing them.
 void require_known_keys(const nlohmann::json& object,

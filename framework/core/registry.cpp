@@ -1,6 +1,5 @@
 #include "framework/core/registry.hpp"
 
-
 namespace hystbench {
 
 std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohmann::json& params,
@@ -13,10 +12,26 @@ std::unique_ptr<Optimizer> make_optimizer(const std::string& name, const nlohman
 
 namespace hystbench {
 
+namespace {
+
+const ProblemInfo& problem_info(const nlohmann::json& spec) {
+  if (!spec.is_object() || !spec.contains("type") || !spec["type"].is_string())
+    throw InputError("problem.type: missing; e.g. \"hammerstein\" or \"function\"");
+  return ProblemRegistry::instance().find(spec["type"].get<std::string>(), "problem.type");
+}
+
+}  // namespace
+
+Params problem_options(const nlohmann::json& spec) {
+  const ProblemInfo& info = problem_info(spec);
+  nlohmann::json options = spec;
+  options.erase("type");
+  return validate_params(info.params, options, "problem");
+}
+
 std::unique_ptr<Problem> make_problem(const nlohmann::json& spec,
                                       const std::filesystem::path& base_dir) {
-  const auto& info = ProblemRegistry::instance().find(spec.value("type", ""), "problem.type");
-  return info.create(spec, base_dir);
+  return problem_info(spec).create(problem_options(spec), base_dir);
 }
 
 }  // namespace hystbench

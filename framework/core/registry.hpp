@@ -38,10 +38,12 @@ struct OptimizerInfo {
 struct ProblemInfo {
   std::string name;
   std::string summary;
-  std::vector<std::string> keys;  // keys the problem's JSON object accepts
-  // Builds from the experiment's "problem" object; relative paths are
-  // resolved against `base_dir` when they do not exist as given.
-  std::function<std::unique_ptr<Problem>(const nlohmann::json& spec,
+  // The keys of the experiment's "problem" object besides "type", checked
+  // by the framework as optimizers' parameters are.
+  std::vector<ParamSpec> params;
+  // Builds from the validated options; relative paths are resolved against
+  // `base_dir` when they do not exist as given.
+  std::function<std::unique_ptr<Problem>(const Params& options,
                                          const std::filesystem::path& base_dir)>
       create;
 };
@@ -120,6 +122,10 @@ struct ProblemRegistration {
   }
 
 namespace hystbench {
+// The options of an experiment's "problem" object checked against its
+// type's declared list (InputError naming "problem.<key>").
+Params problem_options(const nlohmann::json& spec);
+
 // Builds the problem described by an experiment's "problem" object.
 std::unique_ptr<Problem> make_problem(const nlohmann::json& spec,
                                       const std::filesystem::path& base_dir);

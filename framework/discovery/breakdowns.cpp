@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -80,8 +81,8 @@ nlohmann::json to_json(const SegmentErrors& g) {
 
 nlohmann::json to_json(const AmplitudeErrors& g) {
   return group({{"bin", g.bin},
-                {"u_low", finite_or_null(g.u_low)},
-                {"u_high", finite_or_null(g.u_high)}},
+                {"u_low", number_or_null(g.u_low)},
+                {"u_high", number_or_null(g.u_high)}},
                g.metrics);
 }
 
@@ -93,8 +94,8 @@ nlohmann::json to_json(const BranchErrors& b) {
 
 nlohmann::json to_json(const TimeErrors& g) {
   return group({{"window", g.window},
-                {"t_start", finite_or_null(g.t_start)},
-                {"t_end", finite_or_null(g.t_end)}},
+                {"t_start", number_or_null(g.t_start)},
+                {"t_end", number_or_null(g.t_end)}},
                g.metrics);
 }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "framework/discovery/excitation_frequency.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -73,43 +74,43 @@ nlohmann::json list_json(const std::vector<T>& items) {
 
 nlohmann::json numbers(const std::vector<double>& v) {
   nlohmann::json out = nlohmann::json::array();
-  for (double x : v) out.push_back(finite_or_null(x));
+  for (double x : v) out.push_back(number_or_null(x));
   return out;
 }
 
 nlohmann::json to_json(const Correlation& c) {
   return {{"lags", c.lags},
           {"values", numbers(c.values)},
-          {"bound", finite_or_null(c.bound)},
+          {"bound", number_or_null(c.bound)},
           {"outside", c.outside}};
 }
 
 nlohmann::json to_json(const ResidualAnalysis& r) {
   nlohmann::json ccf = to_json(r.ccf);
   ccf["peak_lag"] = r.peak_lag;
-  ccf["input_lag1_autocorrelation"] = finite_or_null(r.input_lag1_autocorrelation);
+  ccf["input_lag1_autocorrelation"] = number_or_null(r.input_lag1_autocorrelation);
   const LjungBox& lb = r.ljung_box;
   return {{"computed_on", "whole record"},
-          {"mean", finite_or_null(r.mean)},
-          {"std", finite_or_null(r.std)},
+          {"mean", number_or_null(r.mean)},
+          {"std", number_or_null(r.std)},
           {"acf", to_json(r.acf)},
           {"ccf", ccf},
           {"ljung_box",
            {{"lags", lb.lags},
-            {"q", finite_or_null(lb.q)},
-            {"p_value", finite_or_null(lb.p_value)}}},
+            {"q", number_or_null(lb.q)},
+            {"p_value", number_or_null(lb.p_value)}}},
           {"white", r.white},
-          {"lowest_excitation_hz", finite_or_null(r.lowest_excitation_hz)}};
+          {"lowest_excitation_hz", number_or_null(r.lowest_excitation_hz)}};
 }
 
 nlohmann::json to_json(const ComparedNoiseFloor& f, bool heldout) {
-  nlohmann::json out = {{"sigma", finite_or_null(f.sigma)},
+  nlohmann::json out = {{"sigma", number_or_null(f.sigma)},
                         {"method", f.method},
-                        {"rmse_over_sigma", finite_or_null(f.rmse_over_sigma)},
+                        {"rmse_over_sigma", number_or_null(f.rmse_over_sigma)},
                         {"pairs", f.pairs},
                         {"period", f.period},
                         {"order", f.order}};
-  if (heldout) out["heldout_rmse_over_sigma"] = finite_or_null(f.heldout_rmse_over_sigma);
+  if (heldout) out["heldout_rmse_over_sigma"] = number_or_null(f.heldout_rmse_over_sigma);
   return out;
 }
 
@@ -160,15 +161,15 @@ nlohmann::json to_json(const PartMetrics& parts) {
 nlohmann::json to_json(const Comparison& c) {
   nlohmann::json out = to_json(c.parts);
   out["n"] = c.n;
-  out["sample_time"] = finite_or_null(c.sample_time);
+  out["sample_time"] = number_or_null(c.sample_time);
   out["by_segment"] = list_json(c.by_segment);
   out["by_amplitude"] = list_json(c.by_amplitude);
   out["amplitude_binning"] = {{"quantity", "|u - mean(u)|"},
                               {"spacing", "equal width"},
                               {"bins", kAmplitudeBins},
-                              {"u_mean", finite_or_null(c.u_mean)}};
+                              {"u_mean", number_or_null(c.u_mean)}};
   out["by_branch"] = to_json(c.by_branch);
-  out["branch_tolerance"] = finite_or_null(c.branch_tolerance);
+  out["branch_tolerance"] = number_or_null(c.branch_tolerance);
   out["by_time"] = list_json(c.by_time);
   out["residual"] = to_json(c.residual);
   out["noise_floor"] = to_json(c.noise_floor, c.parts.heldout.has_value());

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/gnuplot_script.hpp"

@@ -20,19 +20,13 @@ constexpr std::size_t kWorstSegments = 10;
 // r_uu(1) above this: the input is too smooth for the CCF peak lag to mean a delay.
 constexpr double kSmoothInput = 0.9;
 
+using markdown::cell;
+using markdown::header_row;
 using markdown::num;
+using markdown::row;
 
 // Counts (samples, lags, bins) print in full, not as %.4g.
 std::string count(long long n) { return std::to_string(n); }
-
-std::string cell(std::string s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') out += '\\';
-    out += (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  return out.empty() ? " " : out;
-}
 
 std::string unit(const std::string& u) { return u.empty() ? "" : " [" + u + "]"; }
 // "1.2 µm" in running text.
@@ -41,21 +35,6 @@ std::string with_unit(const std::string& number, const std::string& u) {
 }
 
 std::string p_text(double p) { return p < 1e-4 ? "< 0.0001" : num(p); }
-
-std::string row(const std::vector<std::string>& cells) {
-  std::string out = "|";
-  for (const auto& c : cells) out += " " + c + " |";
-  return out + "\n";
-}
-
-// First column left-aligned, the others right-aligned (numbers), except
-// the last when `text_last` (a column of words).
-std::string header_row(const std::vector<std::string>& cells, bool text_last = false) {
-  std::string rule = "|";
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    rule += k == 0 || (text_last && k + 1 == cells.size()) ? " :-- |" : " --: |";
-  return row(cells) + rule + "\n";
-}
 
 std::string ratio_to_sigma(double rmse, const Comparison& m) {
   const double sigma = m.noise_floor.sigma;
@@ -68,7 +47,7 @@ std::string headline(const ComparisonInput& in, const Comparison& m) {
   const std::string yu = unit(in.y_unit);
   std::string out =
       "## Headline\n\n" + header_row({"part", "samples", "RMSE" + yu, "fit %", "relative error",
-                                      "max \\|error\\|" + yu, "mean error" + yu, "RMSE / noise σ"});
+                                      "max |error|" + yu, "mean error" + yu, "RMSE / noise σ"});
   const auto part = [&](const char* name, const ErrorMetrics& p) {
     out += row({name, count(p.n), num(p.rmse), num(p.fit_percent), num(p.relative_error),
                 num(p.max_abs_error), num(p.mean_error), ratio_to_sigma(p.rmse, m)});
@@ -203,11 +182,11 @@ std::string segment_table(const ComparisonInput& in, const Comparison& m) {
                          : std::string()) +
                     "\n\n" +
                     header_row({"segment", "part", "samples", "RMSE" + yu, "fit %",
-                                "max \\|error\\|" + yu, "RMSE / σ"});
+                                "max |error|" + yu, "RMSE / σ"});
   for (std::size_t k = 0; k < shown; ++k) {
     const SegmentErrors& s = segs[k];
     const ErrorMetrics& e = s.metrics;
-    out += row({cell(s.segment), s.part == "heldout" ? "held out" : s.part, count(e.n),
+    out += row({s.segment, s.part == "heldout" ? "held out" : s.part, count(e.n),
                 num(e.rmse), num(e.fit_percent), num(e.max_abs_error), ratio_to_sigma(e.rmse, m)});
   }
   return out + "\n";
@@ -219,7 +198,7 @@ std::string amplitude_table(const ComparisonInput& in, const Comparison& m) {
   std::string out = "### Input amplitude |u − mean u| (mean u = " +
                     with_unit(num(m.u_mean), in.u_unit) +
                     "; equal-width bins)\n\n" +
-                    header_row({"bin", "\\|u − mean u\\|" + uu, "samples", "RMSE" + yu,
+                    header_row({"bin", "|u − mean u|" + uu, "samples", "RMSE" + yu,
                                 "share of samples", "share of SSE"});
   const double n = double(m.n);
   for (const AmplitudeErrors& b : m.by_amplitude)
@@ -234,7 +213,7 @@ std::string branch_table(const ComparisonInput& in, const Comparison& m) {
   std::string out =
       "### Branch (loading Δu > 0, unloading Δu < 0, holding |Δu| ≤ " +
       with_unit(num(m.branch_tolerance), in.u_unit) + ")\n\n" +
-      header_row({"branch", "samples", "RMSE" + yu, "mean error" + yu, "max \\|error\\|" + yu});
+      header_row({"branch", "samples", "RMSE" + yu, "mean error" + yu, "max |error|" + yu});
   const auto branch = [&](const char* name, const ErrorMetrics& g) {
     out += row({name, count(g.n), num(g.rmse), num(g.mean_error), num(g.max_abs_error)});
   };
@@ -302,9 +281,9 @@ std::string signature_table(const Comparison& m) {
       "declared in its effect file: how strongly the residual shows what that effect would "
       "explain. Each falls towards its no-sign value (0 for a correlation or R², about 1 for a "
       "ratio to chance) as the residual becomes white.\n\n" +
-      row({"effect", "statistic", "value", "here"}) + "| :-- | :-- | --: | :-- |\n";
+      header_row({"effect", "statistic", "value", "here"}, "llrl");
   for (const EffectSignature& s : m.signatures)
-    out += row({"`" + s.effect + "`", cell(s.statistic), num(s.value.value), cell(s.sentence)});
+    out += row({"`" + s.effect + "`", s.statistic, num(s.value.value), s.sentence});
   return out + "\n";
 }
 

@@ -5,6 +5,7 @@
 
 #include "framework/core/text.hpp"
 #include "framework/discovery/error_metrics.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -74,14 +75,14 @@ nlohmann::json Completeness::to_json() const {
   return {{"complete", complete},
           {"kind", kind},
           {"reason", reason},
-          {"sigma", finite_or_null(sigma)},
-          {"rmse_over_sigma", finite_or_null(rmse_over_sigma)},
-          {"heldout_rmse_over_sigma", finite_or_null(heldout_rmse_over_sigma)},
-          {"ljung_box_p", finite_or_null(ljung_box_p)},
+          {"sigma", number_or_null(sigma)},
+          {"rmse_over_sigma", number_or_null(rmse_over_sigma)},
+          {"heldout_rmse_over_sigma", number_or_null(heldout_rmse_over_sigma)},
+          {"ljung_box_p", number_or_null(ljung_box_p)},
           {"ccf_outside", ccf_outside},
           {"ccf_lags", ccf_lags},
           {"worst_segment", worst_segment},
-          {"worst_segment_rmse_over_sigma", finite_or_null(worst_segment_rmse_over_sigma)},
+          {"worst_segment_rmse_over_sigma", number_or_null(worst_segment_rmse_over_sigma)},
           {"white", white},
           {"tolerance", tolerance}};
 }

@@ -16,6 +16,7 @@
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/discovery/resonance.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -296,11 +297,11 @@ nlohmann::json Diagnosis::to_json() const {
     list.push_back({{"effect", c.effect},
                     {"model", c.model.text()},
                     {"delta_k", c.delta_k},
-                    {"delta_bic", std::isfinite(c.delta_bic) ? nlohmann::json(c.delta_bic) : nlohmann::json()},
+                    {"delta_bic", number_or_null(c.delta_bic)},
                     {"significant", c.significant},
-                    {"rmse_before", errors.rmse_estimation},
+                    {"rmse_before", number_or_null(errors.rmse_estimation)},
                     {"rmse_after", c.after.to_json()["rmse"]},
-                    {"heldout_rmse_before", errors.n_heldout ? nlohmann::json(errors.rmse_heldout) : nlohmann::json()},
+                    {"heldout_rmse_before", errors.n_heldout ? number_or_null(errors.rmse_heldout) : nlohmann::json()},
                     {"heldout_rmse_after", c.after.to_json()["heldout_rmse"]},
                     {"evidence", c.evidence},
                     {"parameters", c.check.to_json()}});

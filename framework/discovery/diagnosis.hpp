@@ -5,21 +5,23 @@
 // starts exactly where the current one is) and the candidates are ranked by
 // the drop in BIC, with the held-out error as a guard against over-fitting.
 //
-// Significance (documented in the README): a candidate is significant when
+// Significance (docs/discovery.md#hystbench-diagnose): a candidate is
+// significant when
 //   ΔBIC = N·ln(SSE_new/SSE_old) + Δk·ln N  ≤  bic_threshold  (default −10:
 //   "very strong" evidence on the Kass & Raftery scale, odds above 150:1),
 // and, when samples are held out, its held-out RMSE is at least
 // `heldout_gain` (default 1 %) below the current model's. N counts the
 // estimation samples.
 //
-// Verdict (README, "Close calls"): among the significant candidates, the one
-// with the lowest ΔBIC — unless another significant candidate has a held-out
-// RMSE at least `heldout_gain` lower, in which case the held-out error
-// decides (BIC is computed on the data the fit saw; the held-out error is
-// the better guard against a candidate that only absorbs the fit's own
-// errors). Either way, when the two criteria disagree or the runner-up's
-// ΔBIC is within `close_margin` of the winner's, the diagnosis is marked a
-// close call and both candidates, with their fitted parameters, are shown.
+// Verdict (docs/discovery.md#hystbench-diagnose, the close call): among the
+// significant candidates, the one with the lowest ΔBIC — unless another
+// significant candidate has a held-out RMSE at least `heldout_gain` lower, in
+// which case the held-out error decides (BIC is computed on the data the fit
+// saw; the held-out error is the better guard against a candidate that only
+// absorbs the fit's own errors). Either way, when the two criteria disagree
+// or the runner-up's ΔBIC is within `close_margin` of the winner's, the
+// diagnosis is marked a close call and both candidates, with their fitted
+// parameters, are shown.
 // "none" when no candidate is significant — which is what a model with a
 // white residual at the noise floor must get.
 //

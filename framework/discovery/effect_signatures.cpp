@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "framework/discovery/error_metrics.hpp"
+#include "framework/io/json_number.hpp"
 #include "framework/model/effect.hpp"
 
 namespace hystbench {
@@ -22,9 +23,9 @@ nlohmann::json to_json(const std::vector<EffectSignature>& signatures) {
   nlohmann::json out = nlohmann::json::object();
   for (const auto& s : signatures) {
     nlohmann::json details = nlohmann::json::object();
-    for (const auto& [name, x] : s.value.details) details[name] = finite_or_null(x);
+    for (const auto& [name, x] : s.value.details) details[name] = number_or_null(x);
     out[s.effect] = {{"statistic", s.statistic},
-                     {"value", finite_or_null(s.value.value)},
+                     {"value", number_or_null(s.value.value)},
                      {"sentence", s.sentence},
                      {"details", details}};
   }

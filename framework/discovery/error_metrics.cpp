@@ -4,6 +4,8 @@
 #include <limits>
 #include <numeric>
 
+#include "framework/io/json_number.hpp"
+
 namespace hystbench {
 namespace {
 
@@ -52,18 +54,14 @@ ErrorMetrics error_metrics(const Eigen::VectorXd& y, const Eigen::VectorXd& y_mo
   return error_metrics(y, y_model, rows);
 }
 
-nlohmann::json finite_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
-}
-
 nlohmann::json to_json(const ErrorMetrics& m) {
   return {{"n", m.n},
-          {"sse", finite_or_null(m.sse)},
-          {"rmse", finite_or_null(m.rmse)},
-          {"fit_percent", finite_or_null(m.fit_percent)},
-          {"relative_error", finite_or_null(m.relative_error)},
-          {"max_abs_error", finite_or_null(m.max_abs_error)},
-          {"mean_error", finite_or_null(m.mean_error)}};
+          {"sse", number_or_null(m.sse)},
+          {"rmse", number_or_null(m.rmse)},
+          {"fit_percent", number_or_null(m.fit_percent)},
+          {"relative_error", number_or_null(m.relative_error)},
+          {"max_abs_error", number_or_null(m.max_abs_error)},
+          {"mean_error", number_or_null(m.mean_error)}};
 }
 
 }  // namespace hystbench

@@ -33,7 +33,4 @@ ErrorMetrics error_metrics(const Eigen::VectorXd& y, const Eigen::VectorXd& y_mo
 // NaN becomes null.
 nlohmann::json to_json(const ErrorMetrics& m);
 
-// A JSON number, or null when x is not finite (JSON has no NaN or infinity).
-nlohmann::json finite_or_null(double x);
-
 }  // namespace hystbench

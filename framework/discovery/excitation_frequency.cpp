@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 
 namespace hystbench {
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/io/json_number.hpp"
+
 namespace hystbench {
 
 FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelData& data) {
@@ -25,23 +27,21 @@ FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelDa
 }
 
 nlohmann::json FitErrors::to_json() const {
-  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  nlohmann::json j = {{"stable", stable},
-                      {"estimation_samples", n_estimation},
-                      {"heldout_samples", n_heldout},
-                      {"rmse", num(rmse_estimation)},
-                      {"heldout_rmse", n_heldout ? num(rmse_heldout) : nlohmann::json()}};
-  return j;
+  return {{"stable", stable},
+          {"estimation_samples", n_estimation},
+          {"heldout_samples", n_heldout},
+          {"rmse", number_or_null(rmse_estimation)},
+          {"heldout_rmse", n_heldout ? number_or_null(rmse_heldout) : nlohmann::json()}};
 }
 
 FitErrors FitErrors::from_json(const nlohmann::json& j) {
-  auto num = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : 0.0; };
   FitErrors e;
   e.stable = j.at("stable").get<bool>();
   e.n_estimation = j.at("estimation_samples").get<long>();
   e.n_heldout = j.at("heldout_samples").get<long>();
-  e.rmse_estimation = num(j.at("rmse"));
-  e.rmse_heldout = num(j.at("heldout_rmse"));
+  // null is a diverged fit's infinite error; with nothing held out it is 0.
+  e.rmse_estimation = number_or_inf(j.at("rmse"));
+  e.rmse_heldout = e.n_heldout ? number_or_inf(j.at("heldout_rmse")) : 0.0;
   return e;
 }
 

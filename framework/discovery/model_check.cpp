@@ -6,6 +6,7 @@
 #include "framework/discovery/error_metrics.hpp"
 #include "framework/discovery/parameter_uncertainty.hpp"
 #include "framework/discovery/resonance.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -96,9 +97,9 @@ nlohmann::json ModelCheck::to_json() const {
   nlohmann::json params = nlohmann::json::array();
   for (const auto& p : parameters) {
     nlohmann::json j = {{"name", p.name},       {"value", p.value},
-                        {"sd", std::isinf(p.sd) ? nlohmann::json("undetermined") : finite_or_null(p.sd)},
+                        {"sd", std::isinf(p.sd) ? nlohmann::json("undetermined") : number_or_null(p.sd)},
                         {"unit", p.unit},       {"at_bound", p.at_bound}};
-    if (std::isfinite(p.seconds)) j["seconds"] = p.seconds, j["sd_seconds"] = finite_or_null(p.sd_seconds);
+    if (std::isfinite(p.seconds)) j["seconds"] = p.seconds, j["sd_seconds"] = number_or_null(p.sd_seconds);
     params.push_back(j);
   }
   nlohmann::json effs = nlohmann::json::array();

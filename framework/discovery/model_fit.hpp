@@ -19,7 +19,7 @@ namespace hystbench {
 struct FitOptions {
   // Any registered optimizer. jSO by default: on discovery models (Bouc-Wen
   // loops with unstable regions in the box) it reached the optimum in every
-  // restart where CMA-ES stalled (README, "Fitting").
+  // restart where CMA-ES stalled (docs/discovery.md#hystbench-fit).
   std::string optimizer = "jso";
   nlohmann::json optimizer_params = nlohmann::json::object();
   long evaluations = 0;  // global stage per restart; 0 = 2500 per parameter, at least 10000

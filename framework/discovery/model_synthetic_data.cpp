@@ -1,7 +1,7 @@
 #include "framework/discovery/model_synthetic_data.hpp"
 
 #include "framework/core/error.hpp"
-#include "problems/hammerstein/excitation.hpp"
+#include "framework/io/excitation.hpp"
 
 namespace hystbench {
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/model/model.hpp"
-#include "problems/hammerstein/synthetic_data.hpp"
+#include "framework/io/synthetic_data.hpp"
 
 namespace hystbench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 #include "framework/stats/descriptive.hpp"
 
 namespace hystbench {

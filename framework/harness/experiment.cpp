@@ -87,13 +87,6 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
   return spec;
 }
 
-void check_problem(const nlohmann::json& problem) {
-  if (!problem.is_object() || !problem.contains("type") || !problem["type"].is_string())
-    throw InputError("problem.type: missing; e.g. \"hammerstein\" or \"function\"");
-  const auto& info = ProblemRegistry::instance().find(problem["type"].get<std::string>(), "problem.type");
-  require_known_keys(problem, info.keys, "problem");
-}
-
 }  // namespace
 
 Experiment Experiment::from_json(const nlohmann::json& j, const std::string& where) {
@@ -107,7 +100,7 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
     e.name = name.get<std::string>();
     e.description = text_or(j, "description", "", "description");
     e.problem = required(j, "problem");
-    check_problem(e.problem);
+    problem_options(e.problem);  // its keys and their types, before anything runs
     e.budget = Budget::from_json(required(j, "budget"), "budget");
     e.trials = positive_integer(required(j, "trials"), "trials");
     const auto seed = j.value("seed", nlohmann::json(1));

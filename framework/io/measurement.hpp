@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "framework/io/column_map.hpp"
+
 namespace hystbench {
 
 struct Measurement {
@@ -20,22 +22,7 @@ struct Measurement {
   Eigen::Index size() const { return t.size(); }
 };
 
-// Which header names hold t, u, y and segment.
-struct ColumnMap {
-  std::string t = "t";
-  std::string u = "u";
-  std::string y = "y";
-  std::string segment = "segment";
-
-  // "t=t_s,u=u_N,y=y_m" (any subset, any order). Throws InputError naming
-  // the bad entry and the valid roles (t, u, y, segment).
-  static ColumnMap parse(const std::string& spec);
-  // {"t": "t_s", "u": "u_N", "y": "y_m"}; `where` names the JSON key.
-  static ColumnMap from_json(const nlohmann::json& j, const std::string& where);
-  nlohmann::json to_json() const;
-};
-
-// Reads a measurement CSV (docs/design.md#measurement-csv). InputError naming
+// Reads a measurement CSV (docs/formats.md#measurement-csv). InputError naming
 // file, line and
 // column for: missing or empty file, missing or duplicate column, a value not
 // a finite number or beyond 1e150, ragged row, time not increasing or not

@@ -1,5 +1,5 @@
 #pragma once
-// Physical effects: the building blocks of discovery models (docs/design.md#effect-plugins).
+// Physical effects: the building blocks of discovery models (docs/architecture.md#effect-plugins).
 //
 // A model is an ordered list of effects in a fixed signal chain
 //

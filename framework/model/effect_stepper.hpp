@@ -1,6 +1,6 @@
 #pragma once
 // The streaming form of an effect: its state, advanced one sample at a time
-// (docs/design.md#streaming-models). Effect::stepper() makes one from the
+// (docs/models.md#streaming-models). Effect::stepper() makes one from the
 // effect's parameters; StreamingModel chains them like Model::simulate
 // chains apply().
 //

@@ -7,6 +7,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
+#include "framework/io/segment_runs.hpp"
 
 namespace hystbench {
 namespace {
@@ -27,15 +28,11 @@ double zero_crossing_frequency(const ModelData& d, Eigen::Index begin, Eigen::In
   return crossings / (2.0 * double(n) * d.sample_time);
 }
 
-// Contiguous runs of equal labels, in time order.
+// Contiguous runs of equal labels, in time order, with their frequencies.
 std::vector<SegmentSpan> segment_spans(const ModelData& d) {
   std::vector<SegmentSpan> spans;
-  for (Eigen::Index k = 0; k < d.size(); ++k) {
-    if (spans.empty() || spans.back().label != d.segment[k])
-      spans.push_back({d.segment[k], k, k});
-    spans.back().end = k + 1;
-  }
-  for (auto& s : spans) s.frequency = zero_crossing_frequency(d, s.begin, s.end);
+  for (const SegmentRun& run : segment_runs(d.segment, d.size()))
+    spans.push_back({run.label, run.begin, run.end, zero_crossing_frequency(d, run.begin, run.end)});
   return spans;
 }
 

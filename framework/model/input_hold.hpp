@@ -1,7 +1,7 @@
 #pragma once
 // How a sampled input is reconstructed between its samples, for effects that
 // integrate an ODE with several internal steps per sample
-// (docs/design.md#streaming-models). One choice, used by the batch
+// (docs/models.md#streaming-models). One choice, used by the batch
 // simulation (Model::simulate) and by the sample-by-sample stream
 // (StreamingModel) alike:
 //

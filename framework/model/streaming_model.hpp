@@ -1,5 +1,5 @@
 #pragma once
-// A model run one sample at a time (docs/design.md#streaming-models):
+// A model run one sample at a time (docs/models.md#streaming-models):
 // reset(), then step(u[k]) -> y[k] for k = 0, 1, ...; causal, and holding
 // its own state, so that a model can sit inside a loop (a plant, or an
 // estimate of one). Fed the samples of a record, it gives what

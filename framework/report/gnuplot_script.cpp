@@ -1,5 +1,6 @@
 #include "framework/report/gnuplot_script.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -21,6 +22,11 @@ std::string number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.10g", x);
   return buf;
+}
+
+std::string one_line(std::string s) {
+  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return s;
 }
 
 std::string header(const std::string& name, const std::string& shows, const std::string& reads) {

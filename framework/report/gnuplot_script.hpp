@@ -15,6 +15,10 @@ std::string quoted(const std::string& s);
 // %.10g, or NaN (gnuplot skips the point) when x is not finite.
 std::string number(double x);
 
+// The text with its line breaks turned into spaces: labels also go into the
+// '#' comment lines of data files.
+std::string one_line(std::string s);
+
 // Comment block naming the figure, what it shows and which file it reads,
 // and how to re-render it; then `set encoding utf8`.
 std::string header(const std::string& name, const std::string& shows, const std::string& reads);

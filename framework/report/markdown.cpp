@@ -29,9 +29,12 @@ std::string row(const std::vector<std::string>& cells) {
   return out + "\n";
 }
 
-std::string header_row(const std::vector<std::string>& cells) {
+std::string header_row(const std::vector<std::string>& cells, const std::string& align) {
   std::string rule = "|";
-  for (std::size_t k = 0; k < cells.size(); ++k) rule += k == 0 ? " :-- |" : " --: |";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const bool left = align.empty() ? k == 0 : align.at(k) == 'l';
+    rule += left ? " :-- |" : " --: |";
+  }
   return row(cells) + rule + "\n";
 }
 

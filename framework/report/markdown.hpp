@@ -14,7 +14,8 @@ std::string num(double x);
 std::string cell(const std::string& s);
 // "| a | b |\n"
 std::string row(const std::vector<std::string>& cells);
-// The header row and the alignment rule: first column left, others right.
-std::string header_row(const std::vector<std::string>& cells);
+// The header row and the alignment rule: per column 'l' (left) or 'r'
+// (right) from `align`; empty: first column left, the others right.
+std::string header_row(const std::vector<std::string>& cells, const std::string& align = "");
 
 }  // namespace hystbench::markdown

@@ -7,6 +7,8 @@
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/io/json_number.hpp"
+#include "framework/report/cell_table.hpp"
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/ranking_figure.hpp"
 #include "framework/report/table_format.hpp"
@@ -121,14 +123,9 @@ std::string data_set_list(const FriedmanRanking& r) {
 }  // namespace
 
 std::string ranking_markdown(const FriedmanRanking& r) {
-  const auto header = header_cells(r, Format::Markdown);
-  std::string out = "**Table.** " + caption(r, Format::Markdown) + "\n\n";
-  out += "| " + join(header, " | ") + " |\n|:---";
-  for (std::size_t i = 1; i < header.size(); ++i) out += "|---:";
-  out += "|\n";
-  for (int j = 0; j < int(r.labels.size()); ++j)
-    out += "| " + join(row_cells(r, j, Format::Markdown), " | ") + " |\n";
-  return out + data_set_list(r);
+  table::CellTable t{caption(r, Format::Markdown), "", header_cells(r, Format::Markdown), {}};
+  for (int j = 0; j < int(r.labels.size()); ++j) t.rows.push_back(row_cells(r, j, Format::Markdown));
+  return table::markdown(t) + data_set_list(r);
 }
 
 std::string ranking_latex(const FriedmanRanking& r) {
@@ -165,17 +162,16 @@ std::string ranking_csv(const FriedmanRanking& r) {
 }
 
 nlohmann::json ranking_json(const FriedmanRanking& r) {
-  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nullptr; };
   return {{"statistic", to_string(r.statistic)},
           {"data_sets", r.blocks},
           {"problems", r.problems},
           {"algorithms", r.labels},
           {"average_ranks", r.test.average_ranks},
-          {"chi2_F", number(r.test.chi2)},
-          {"chi2_p", number(r.test.chi2_p)},
-          {"iman_davenport_F", number(r.test.f)},
-          {"iman_davenport_p", number(r.test.f_p)},
-          {"nemenyi_cd_0.05", r.critical_difference ? number(*r.critical_difference) : nullptr},
+          {"chi2_F", number_or_null(r.test.chi2)},
+          {"chi2_p", number_or_null(r.test.chi2_p)},
+          {"iman_davenport_F", number_or_null(r.test.f)},
+          {"iman_davenport_p", number_or_null(r.test.f_p)},
+          {"nemenyi_cd_0.05", r.critical_difference ? number_or_null(*r.critical_difference) : nullptr},
           {"control", r.labels[r.control]}};
 }
 

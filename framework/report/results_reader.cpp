@@ -4,7 +4,7 @@
 #include <string>
 
 #include "framework/core/error.hpp"
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 
 namespace hystbench {
 namespace {

@@ -7,7 +7,7 @@
 #include "framework/core/error.hpp"
 #include "framework/core/rng.hpp"
 #include "framework/io/atomic_file.hpp"
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 #include "framework/report/provenance.hpp"
 #include "framework/report/results_merge.hpp"
 

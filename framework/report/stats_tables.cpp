@@ -8,6 +8,7 @@
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/report/cell_table.hpp"
 #include "framework/report/table_format.hpp"
 #include "framework/stats/rank_sum_exact.hpp"
 
@@ -184,13 +185,9 @@ std::string caption(const CampaignStatistics& s, const ReportContext& ctx, Forma
 }  // namespace
 
 std::string stats_markdown(const CampaignStatistics& s, const ReportContext& ctx) {
-  std::string out = "**Table.** " + caption(s, ctx, Format::Markdown) + "\n\n";
-  const auto header = header_cells(Format::Markdown);
-  out += "| " + join(header, " | ") + " |\n|:---";
-  for (std::size_t i = 1; i < header.size(); ++i) out += "|---:";
-  out += "|\n";
-  for (const auto& r : s.rows) out += "| " + join(row_cells(r, s, Format::Markdown), " | ") + " |\n";
-  return out + "\n+/=/-: " + mark_counts(s) + "\n";
+  table::CellTable t{caption(s, ctx, Format::Markdown), "", header_cells(Format::Markdown), {}};
+  for (const auto& r : s.rows) t.rows.push_back(row_cells(r, s, Format::Markdown));
+  return table::markdown(t) + "\n+/=/-: " + mark_counts(s) + "\n";
 }
 
 std::string stats_latex(const CampaignStatistics& s, const ReportContext& ctx) {

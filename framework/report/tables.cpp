@@ -11,6 +11,7 @@
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/report/cell_table.hpp"
 #include "framework/report/table_format.hpp"
 
 namespace hystbench {
@@ -103,14 +104,9 @@ std::string failure_notes(const std::vector<AlgorithmSummary>& rows) {
 }  // namespace
 
 std::string table_markdown(const std::vector<AlgorithmSummary>& rows, const ReportContext& ctx) {
-  std::string out = "**Table.** " + caption(ctx, Format::Markdown) + "\n\n";
-  const auto header = header_cells(Format::Markdown);
-  out += "| " + join(header, " | ") + " |\n|:---";
-  for (std::size_t i = 1; i < header.size(); ++i) out += "|---:";
-  out += "|\n";
-  for (const auto& cells : body_cells(rows, Format::Markdown))
-    out += "| " + join(cells, " | ") + " |\n";
-  return out + failure_notes(rows);
+  const table::CellTable t{caption(ctx, Format::Markdown), "", header_cells(Format::Markdown),
+                           body_cells(rows, Format::Markdown)};
+  return table::markdown(t) + failure_notes(rows);
 }
 
 std::string table_latex(const std::vector<AlgorithmSummary>& rows, const ReportContext& ctx) {

@@ -1,7 +1,7 @@
 #pragma once
 // The results table in three formats, one row per algorithm.
 //
-// Columns (README "Outputs" defines each): Algorithm, Best fitness value,
+// Columns (docs/usage.md#outputs defines each): Algorithm, Best fitness value,
 // f_avg, f_max, f_min, f_std, Median, Iterations, Evaluations, Failed.
 #include <filesystem>
 #include <string>

@@ -6,7 +6,7 @@
 #include "framework/core/text.hpp"
 #include "framework/core/parameters.hpp"
 #include "framework/core/registry.hpp"
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 #include "framework/io/data_path.hpp"
 #include "framework/io/json_file.hpp"
 #include "framework/report/table_format.hpp"

@@ -14,9 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Six significant digits: these files feed figures (svr.json holds the numbers).
-std::string plotted(double v) { return std::isfinite(v) ? format_number("%.6g", v) : csv_number(v); }
-
 std::string axis(const std::string& name, const std::string& unit) {
   return unit.empty() ? name : name + " (" + unit + ")";
 }
@@ -28,8 +25,8 @@ std::string loop_csv(const SvrTestRow& row) {
   const Eigen::Index n = row.y.size() - row.scored_from;
   const Eigen::Index step = std::max<Eigen::Index>(1, n / 4000);
   for (Eigen::Index k = row.scored_from; k < row.y.size(); k += step) {
-    out += plotted(row.u[k]) + "," + plotted(row.y[k]) + "," + plotted(row.y_svr[k]);
-    if (greybox) out += "," + plotted(row.y_greybox[k]);
+    out += figure_number(row.u[k]) + "," + figure_number(row.y[k]) + "," + figure_number(row.y_svr[k]);
+    if (greybox) out += "," + figure_number(row.y_greybox[k]);
     out += "\n";
   }
   return out;
@@ -57,8 +54,8 @@ std::string error_csv(const SvrResults& r) {
   std::string out = "index,signal,svr_re_percent,greybox_re_percent\n";
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const SvrTestRow& row = r.rows[i];
-    out += std::to_string(i) + "," + csv_field(row.signal->label) + "," + plotted(100.0 * row.svr.re) + "," +
-           (row.greybox ? plotted(100.0 * row.greybox->re) : "") + "\n";
+    out += std::to_string(i) + "," + csv_field(row.signal->label) + "," + figure_number(100.0 * row.svr.re) + "," +
+           (row.greybox ? figure_number(100.0 * row.greybox->re) : "") + "\n";
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #include "framework/svr/svr_record.hpp"
 
 #include "framework/core/error.hpp"
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 #include "framework/io/data_path.hpp"
 
 namespace hystbench {

@@ -1,6 +1,6 @@
 #pragma once
 // The SVR Hammerstein-like model run one sample at a time in physical
-// units, for a loop (docs/tracking.md#the-svr-model): stage 1 in free run
+// units, for a loop (docs/tracking.md#identified-models): stage 1 in free run
 // (its own past outputs as regressors), then stage 2.
 //
 //   w(k+1) = stage 1 (x(k) .. x(k−m), w(k) .. w(k−n)),   y = stage 2 (w)

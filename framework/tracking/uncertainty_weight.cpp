@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "framework/core/error.hpp"
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 #include "framework/io/measurement.hpp"
 #include "framework/model/spectrum.hpp"
 #include "framework/robust/linear_system.hpp"

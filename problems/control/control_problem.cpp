@@ -13,24 +13,14 @@
 namespace hystbench {
 namespace {
 
-const std::vector<std::string>& problem_keys() {
-  static const std::vector<std::string> keys = {"type", "experiment", "controller", "params", "tune",
-                                                "convergence_weight", "noise_seed", "duration_s"};
-  return keys;
-}
-
-ControlExperiment load_experiment(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-  require_known_keys(spec, problem_keys(), "problem");  // before the experiment is built
-  if (!spec.contains("experiment") || !spec["experiment"].is_string())
-    throw InputError("problem.experiment: give the control experiment file (plant, actuator, "
-                     "disturbance, secondary path) whose loop is tuned");
-  const auto path = resolve_data_path(spec["experiment"].get<std::string>(), base_dir, "problem.experiment");
+ControlExperiment load_experiment(const Params& p, const std::filesystem::path& base_dir) {
+  const auto path = resolve_data_path(p.text("experiment"), base_dir, "problem.experiment");
   ControlExperiment x = ControlExperiment::load(path);
-  if (spec.contains("duration_s")) {
-    if (!spec["duration_s"].is_number() || !(spec["duration_s"].get<double>() >= x.windows.steady_s))
+  if (!p.is_auto("duration_s")) {
+    if (!(p.real("duration_s") >= x.windows.steady_s))
       throw InputError("problem.duration_s: give a number of seconds above the steady window (" +
                        std::to_string(x.windows.steady_s) + " s)");
-    x.loop.duration_s = spec["duration_s"].get<double>();
+    x.loop.duration_s = p.real("duration_s");
   }
   return x;
 }
@@ -41,26 +31,41 @@ ProblemInfo ControlProblem::info() {
   return {"control",
           "tuning of a vibration controller's constants: one closed-loop run per candidate, "
           "fitness = steady error ratio + weight x convergence time",
-          problem_keys(),
-          [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-            return std::unique_ptr<Problem>(new ControlProblem(spec, base_dir));
+          {ParamSpec::text("experiment", nullptr,
+                           "the control experiment file (plant, actuator, disturbance, secondary "
+                           "path) whose loop is tuned")
+               .require(),
+           ParamSpec::text("controller", nullptr, "the controller to tune (hystbench list controllers)")
+               .require(),
+           ParamSpec::object("params", "the controller's fixed constants"),
+           ParamSpec::array("tune",
+                            "the constants to tune, e.g. [{\"param\": \"mu\", \"lower\": 0.001, "
+                            "\"upper\": 0.03, \"scale\": \"log\"}]")
+               .require(),
+           ParamSpec::real("convergence_weight", 1e-3, 0.0, 1e12,
+                           "weight of the convergence time (s) against the error ratio"),
+           ParamSpec::integer("noise_seed", 1, 0, 9007199254740992.0, "seed of the loop's noise"),
+           ParamSpec::real("duration_s", nullptr, 0.0, 1e9,
+                           "length of each closed-loop run; auto = the experiment's")},
+          [](const Params& p, const std::filesystem::path& base_dir) {
+            return std::unique_ptr<Problem>(new ControlProblem(p, base_dir));
           }};
 }
 
-ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir)
-    : experiment_(load_experiment(spec, base_dir)), setup_(build_control_setup(experiment_)) {
-  controller_ = optional_text(spec, "controller", "", "problem");
+ControlProblem::ControlProblem(const Params& p, const std::filesystem::path& base_dir)
+    : experiment_(load_experiment(p, base_dir)), setup_(build_control_setup(experiment_)) {
+  controller_ = p.text("controller");
   const ControllerInfo& info = ControllerRegistry::instance().find(controller_, "problem.controller");
-  fixed_ = spec.value("params", nlohmann::json::object());
-  if (!fixed_.is_object()) throw InputError("problem.params: give the fixed constants as an object");
-  if (!spec.contains("tune") || !spec["tune"].is_array() || spec["tune"].empty())
-    throw InputError("problem.tune: give the constants to tune, e.g. [{\"param\": \"mu\", "
+  fixed_ = p.is_auto("params") ? nlohmann::json::object() : p.value("params");
+  const nlohmann::json& tune = p.value("tune");
+  if (tune.empty())
+    throw InputError("problem.tune: give at least one constant to tune, e.g. [{\"param\": \"mu\", "
                      "\"lower\": 0.001, \"upper\": 0.03, \"scale\": \"log\"}]");
-  const int n = int(spec["tune"].size());
+  const int n = int(tune.size());
   bounds_.lower.resize(n);
   bounds_.upper.resize(n);
   for (int i = 0; i < n; ++i) {
-    const auto& t = spec["tune"][i];
+    const auto& t = tune[i];
     const std::string at = "problem.tune[" + std::to_string(i) + "]";
     require_known_keys(t, {"param", "lower", "upper", "scale"}, at);
     const std::string scale = optional_text(t, "scale", "linear", at);
@@ -86,8 +91,8 @@ ControlProblem::ControlProblem(const nlohmann::json& spec, const std::filesystem
     bounds_.names.push_back(tuned.log ? "log10(" + tuned.param + ")" : tuned.param);
     tuned_.push_back(tuned);
   }
-  convergence_weight_ = optional_number(spec, "convergence_weight", 1e-3, 0.0, 1e12, "problem");
-  noise_seed_ = std::uint64_t(optional_number(spec, "noise_seed", 1, 0, 9007199254740992.0, "problem"));
+  convergence_weight_ = p.real("convergence_weight");
+  noise_seed_ = std::uint64_t(p.real("noise_seed"));
   uncontrolled_ = run_uncontrolled(setup_.paths, setup_.loop, noise_seed_);
 }
 

@@ -38,7 +38,7 @@ class ControlProblem : public Problem {
  public:
   static ProblemInfo info();
   // Throws InputError naming the key (problem.tune[1].param, ...).
-  ControlProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir);
+  ControlProblem(const Params& options, const std::filesystem::path& base_dir);
 
   std::string name() const override;
   const Bounds& bounds() const override { return bounds_; }

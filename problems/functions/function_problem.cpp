@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "framework/core/error.hpp"
@@ -11,7 +12,6 @@
 namespace hystbench {
 namespace {
 
-
 const TestFunction& lookup(const std::string& name) {
   const TestFunction* f = find_test_function(name);
   if (!f)
@@ -20,40 +20,24 @@ const TestFunction& lookup(const std::string& name) {
   return *f;
 }
 
-std::string read_name(const nlohmann::json& spec) {
-  auto it = spec.find("name");
-  if (it == spec.end() || !it->is_string())
-    throw InputError("problem.name: expected the function's name, one of: " +
-                     join(test_function_names()));
-  return it->get<std::string>();
-}
-
-int read_dimension(const nlohmann::json& spec) {
-  auto it = spec.find("dimension");
-  if (it == spec.end()) throw InputError("problem.dimension: missing; must be a positive integer");
-  // Compared as double so that huge signed or unsigned values cannot wrap; every
-  // integer near the int range is exact in a double.
-  const bool ok = it->is_number_integer() && it->get<double>() >= 1 && it->get<double>() <= INT_MAX;
-  if (!ok) throw InputError("problem.dimension = " + it->dump() + ": must be a positive integer");
-  return it->get<int>();
-}
-
-std::optional<double> read_bound(const nlohmann::json& spec, const std::string& key) {
-  auto it = spec.find(key);
-  if (it == spec.end()) return std::nullopt;
-  if (!it->is_number() || !std::isfinite(it->get<double>()))
-    throw InputError("problem." + key + ": expected a finite number, got " + it->dump());
-  return it->get<double>();
+std::optional<double> optional_real(const Params& p, const std::string& key) {
+  return p.is_auto(key) ? std::nullopt : std::optional<double>(p.real(key));
 }
 
 }  // namespace
 
 ProblemInfo FunctionProblem::info() {
+  constexpr double kHuge = std::numeric_limits<double>::max();
   return {"function",
           "analytic test function with minimum 0 (" + join(test_function_names()) + ")",
-          {"type", "name", "dimension", "lower", "upper"},
-          [](const nlohmann::json& spec, const std::filesystem::path&) {
-            return std::unique_ptr<Problem>(FunctionProblem::from_json(spec));
+          {ParamSpec::choice("name", "", test_function_names(), "the test function").require(),
+           ParamSpec::integer("dimension", nullptr, 1, INT_MAX, "number of variables").require(),
+           ParamSpec::real("lower", nullptr, -kHuge, kHuge,
+                           "lower bound of every variable; auto = the function's own box"),
+           ParamSpec::real("upper", nullptr, -kHuge, kHuge,
+                           "upper bound of every variable; auto = the function's own box")},
+          [](const Params& p, const std::filesystem::path&) {
+            return std::unique_ptr<Problem>(FunctionProblem::from_options(p));
           }};
 }
 
@@ -76,10 +60,9 @@ FunctionProblem::FunctionProblem(const std::string& function, int dimension,
   for (int i = 1; i <= dimension; ++i) bounds_.names.push_back(std::string("x").append(std::to_string(i)));
 }
 
-std::unique_ptr<FunctionProblem> FunctionProblem::from_json(const nlohmann::json& spec) {
-  require_known_keys(spec, {"type", "name", "dimension", "lower", "upper"}, "problem");
-  return std::make_unique<FunctionProblem>(read_name(spec), read_dimension(spec),
-                                           read_bound(spec, "lower"), read_bound(spec, "upper"));
+std::unique_ptr<FunctionProblem> FunctionProblem::from_options(const Params& p) {
+  return std::make_unique<FunctionProblem>(p.text("name"), p.integer("dimension"),
+                                           optional_real(p, "lower"), optional_real(p, "upper"));
 }
 
 std::string FunctionProblem::name() const {

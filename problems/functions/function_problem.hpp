@@ -21,8 +21,8 @@ class FunctionProblem : public Problem {
   FunctionProblem(const std::string& function, int dimension,
                   std::optional<double> lower = std::nullopt,
                   std::optional<double> upper = std::nullopt);
-  // Reads the experiment's "problem" object. Throws InputError.
-  static std::unique_ptr<FunctionProblem> from_json(const nlohmann::json& spec);
+  // From the experiment's validated "problem" options. Throws InputError.
+  static std::unique_ptr<FunctionProblem> from_options(const Params& options);
   static ProblemInfo info();  // registry entry "function"
 
   std::string name() const override;

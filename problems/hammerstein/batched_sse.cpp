@@ -8,30 +8,20 @@
 #include <limits>
 #include <vector>
 
+#include "framework/model/effect_lanes.hpp"
 #include "problems/hammerstein/recurrence_coefficients.hpp"
+#include "problems/hammerstein/seed_step.hpp"
 
 namespace hystbench {
 namespace {
 
-// GCC vector extensions rather than Eigen: the block's state must live in
-// named registers across the time loop, and a vector wider than the
-// hardware's registers runs 2-3x slower, so the width follows the target.
-#if defined(__AVX512F__)
-constexpr int kLanes = 8;
-#elif defined(__AVX__)
-constexpr int kLanes = 4;
-#else
-constexpr int kLanes = 2;
-#endif
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
-using LaneBits = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
+// The discovery models' lane vectors (GCC vector extensions, as wide as the
+// target's registers): the block's state lives in named registers across the
+// time loop.
+constexpr int kLanes = kEffectLanes;
+using Lanes = LaneVector;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// |x| by clearing the sign bit, exactly as std::abs does for a double.
-inline Lanes abs(Lanes x) {
-  return std::bit_cast<Lanes>(std::bit_cast<LaneBits>(x) & std::numeric_limits<std::int64_t>::max());
-}
 
 // RecurrenceCoefficients of kLanes candidates, lane l holding candidate l.
 struct BlockCoefficients {
@@ -44,9 +34,10 @@ struct BlockCoefficients {
   }
 };
 
-// The model's memory for one block; every signal is 0 before k = 0.
+// One block's model memory and partial SSE.
 struct BlockState {
-  Lanes h{}, h1_1{}, h1_2{}, r_1{}, r_2{}, r1_1{}, r1_2{}, sse{};
+  SeedState<Lanes> model;
+  Lanes sse{};
 };
 
 // What every candidate shares at sample k.
@@ -54,22 +45,10 @@ struct Sample {
   double drive, abs_drive, u, y;
 };
 
-// One time step of one block: run_model() in hammerstein_model.cpp, the
-// same operations in the same order, on every lane.
+// One time step of one block: the seed model's step on every lane.
 [[gnu::always_inline]] inline void advance(BlockState& s, const BlockCoefficients& q, const Sample& x) {
-  const Lanes h = (s.h * (1.0 - q.beta * x.abs_drive) + q.aL * x.drive) - q.gamma * x.drive * abs(s.h);
-  const Lanes h1 = q.d1 * x.u + q.d2 * x.u * x.u - h;
-  const Lanes r = (q.k_h0 * h1 + q.k_h1 * s.h1_1 + q.k_h2 * s.h1_2 + q.k_r2 * s.r_2) + q.k_r1 * s.r_1;
-  const Lanes r1 = (q.a * s.r_1 + q.b * s.r_2 - q.d * s.r1_2) - q.c * s.r1_1;
-  const Lanes e = x.y - r1;
+  const Lanes e = x.y - seed_step(s.model, q, x.drive, x.abs_drive, x.u);
   s.sse += e * e;
-  s.h = h;
-  s.h1_2 = s.h1_1;
-  s.h1_1 = h1;
-  s.r_2 = s.r_1;
-  s.r_1 = r;
-  s.r1_2 = s.r1_1;
-  s.r1_1 = r1;
 }
 
 template <BoucWenForm form>

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.hpp"
 #include "problems/hammerstein/recurrence_coefficients.hpp"
+#include "problems/hammerstein/seed_step.hpp"
 
 #include <cmath>
 #include <limits>
@@ -19,28 +20,14 @@ bool stable_second_order(double p, double q) { return std::abs(q) < 1.0 && std::
 template <class Sink>
 void run_model(const HammersteinParams& p, const Eigen::VectorXd& u, double Ts, BoucWenForm form,
                Sink&& sink) {
-  // The recurrences are latency-bound: in each sum the previous sample's
-  // state is added last, so that only one multiply and one add separate
-  // consecutive samples. The batched kernel repeats these expressions
-  // operation for operation (batched_sse.cpp); change both together.
   const RecurrenceCoefficients q(p, Ts);
   const bool increment = form == BoucWenForm::Increment;
-  double h = 0, u_prev = 0, h1_1 = 0, h1_2 = 0, r_1 = 0, r_2 = 0, r1_1 = 0, r1_2 = 0;
+  SeedState<double> state;
+  double u_prev = 0;
   for (Eigen::Index k = 0; k < u.size(); ++k) {
     const double drive = increment ? u[k] - u_prev : u[k];
-    // h + aL du - beta |du| h - gamma du |h|, grouped by h
-    h = (h * (1.0 - q.beta * std::abs(drive)) + q.aL * drive) - q.gamma * drive * std::abs(h);
-    const double h1 = q.d1 * u[k] + q.d2 * u[k] * u[k] - h;
-    const double r = (q.k_h0 * h1 + q.k_h1 * h1_1 + q.k_h2 * h1_2 + q.k_r2 * r_2) + q.k_r1 * r_1;
-    const double r1 = (q.a * r_1 + q.b * r_2 - q.d * r1_2) - q.c * r1_1;
-    if (!sink(k, r1)) return;
+    if (!sink(k, seed_step(state, q, drive, std::abs(drive), u[k]))) return;
     u_prev = u[k];
-    h1_2 = h1_1;
-    h1_1 = h1;
-    r_2 = r_1;
-    r_1 = r;
-    r1_2 = r1_1;
-    r1_1 = r1;
   }
 }
 

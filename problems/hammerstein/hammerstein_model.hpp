@@ -1,6 +1,6 @@
 #pragma once
 // The 13-parameter Hammerstein seed model of an MFC actuator
-// (docs/design.md#hammerstein-seed-model):
+// (docs/models.md#hammerstein-seed-model):
 // Bouc-Wen hysteresis -> asymmetric static part -> mass-spring-damper
 // (bilinear discretisation) -> second-order ARX.
 //
@@ -15,7 +15,7 @@ namespace hystbench {
 
 enum class BoucWenForm {
   Increment,  // h driven by du = u[k] - u[k-1]: the discretised Bouc-Wen ODE (default)
-  Paper,      // h driven by u[k] itself, as printed in the MEDE paper; see README
+  Paper,      // h driven by u[k] itself, as printed in the MEDE paper; see docs/models.md
 };
 
 std::string to_string(BoucWenForm form);

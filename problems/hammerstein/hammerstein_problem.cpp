@@ -1,6 +1,7 @@
 #include "problems/hammerstein/hammerstein_problem.hpp"
 
 #include <fstream>
+#include <tuple>
 
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
@@ -17,13 +18,7 @@ Bounds apply_bound_overrides(Bounds bounds, const nlohmann::json& overrides) {
   for (int j = 0; j < bounds.dimension(); ++j) {
     const auto it = overrides.find(bounds.names[j]);
     if (it == overrides.end()) continue;
-    const std::string key = "problem.bounds." + bounds.names[j];
-    if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
-      throw InputError(key + " = " + it->dump() + ": expected [lower, upper]");
-    bounds.lower[j] = (*it)[0].get<double>();
-    bounds.upper[j] = (*it)[1].get<double>();
-    if (!(bounds.lower[j] < bounds.upper[j]))
-      throw InputError(key + " = " + it->dump() + ": the lower bound must be below the upper bound");
+    std::tie(bounds.lower[j], bounds.upper[j]) = read_range(*it, "problem.bounds." + bounds.names[j]);
   }
   return bounds;
 }
@@ -36,25 +31,21 @@ HammersteinProblem::Units read_units(const nlohmann::json& j, const std::string&
   return {j.value("u", ""), j.value("y", "")};
 }
 
-std::unique_ptr<Problem> create(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-  if (!spec.contains("data")) throw InputError("problem: missing key \"data\" (the measurement CSV file)");
-  if (!spec["data"].is_string()) throw InputError("problem.data: expected a file name");
-  const auto path = resolve_data_path(spec["data"].get<std::string>(), base_dir, "problem.data");
+std::unique_ptr<Problem> create(const Params& p, const std::filesystem::path& base_dir) {
+  const auto path = resolve_data_path(p.text("data"), base_dir, "problem.data");
   const ColumnMap columns =
-      spec.contains("columns") ? ColumnMap::from_json(spec["columns"], "problem.columns") : ColumnMap{};
-  const auto form_json = spec.value("bouc_wen_form", nlohmann::json("increment"));
-  if (!form_json.is_string()) throw InputError("problem.bouc_wen_form: use \"increment\" or \"paper\"");
+      p.is_auto("columns") ? ColumnMap{} : ColumnMap::from_json(p.value("columns"), "problem.columns");
   Bounds bounds = HammersteinProblem::default_bounds();
-  if (spec.contains("bounds")) bounds = apply_bound_overrides(bounds, spec["bounds"]);
+  if (!p.is_auto("bounds")) bounds = apply_bound_overrides(bounds, p.value("bounds"));
   const nlohmann::json truth = read_truth(path);
-  const auto units = spec.contains("units") ? read_units(spec["units"], "problem.units")
-                                            : read_units(truth.value("units", nlohmann::json::object()),
-                                                         path.string() + " truth units");
+  const auto units = !p.is_auto("units") ? read_units(p.value("units"), "problem.units")
+                                         : read_units(truth.value("units", nlohmann::json::object()),
+                                                      path.string() + " truth units");
   std::optional<double> noise_floor;
   if (truth.contains("noise_floor_sse") && truth["noise_floor_sse"].is_number())
     noise_floor = truth["noise_floor_sse"].get<double>();
   return std::make_unique<HammersteinProblem>(read_measurement(path, columns),
-                                              bouc_wen_form_from_string(form_json.get<std::string>()),
+                                              bouc_wen_form_from_string(p.text("bouc_wen_form")),
                                               bounds, units, noise_floor);
 }
 
@@ -72,7 +63,12 @@ ProblemInfo HammersteinProblem::info() {
   return {"hammerstein",
           "13-parameter Hammerstein MFC model (Bouc-Wen, asymmetric static part, "
           "mass-spring-damper, ARX); fitness = SSE over the record",
-          {"type", "data", "columns", "bouc_wen_form", "bounds", "units"},
+          {ParamSpec::text("data", nullptr, "the measurement CSV file").require(),
+           ParamSpec::object("columns", "column names of t, u, y in the CSV"),
+           ParamSpec::choice("bouc_wen_form", "increment", {"increment", "paper"},
+                             "discretisation of the Bouc-Wen equation"),
+           ParamSpec::object("bounds", "{\"name\": [lower, upper]} over the default box"),
+           ParamSpec::object("units", "{\"u\": \"V\", \"y\": \"µm\"} for tables and figures")},
           create};
 }
 

@@ -32,7 +32,7 @@ class HammersteinProblem : public Problem, public SignalModelProblem, public Lea
                      std::optional<double> noise_floor = std::nullopt);
 
   static ProblemInfo info();  // registry entry "hammerstein"
-  // The documented default search box (README, "Hammerstein problem").
+  // The documented default search box (docs/usage.md#hammerstein--the-mfc-seed-model).
   static Bounds default_bounds();
 
   std::string name() const override;

@@ -13,20 +13,6 @@
 namespace hystbench {
 namespace {
 
-const std::vector<std::string>& problem_keys() {
-  static const std::vector<std::string> keys = {"type", "order", "experiment", "log10_gain", "log10_omega", "zeta"};
-  return keys;
-}
-
-std::pair<double, double> range(const nlohmann::json& spec, const std::string& key, double lo, double hi) {
-  if (!spec.contains(key)) return {lo, hi};
-  const auto& r = spec[key];
-  if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
-      !(r[0].get<double>() < r[1].get<double>()))
-    throw InputError("problem." + key + ": give [lower, upper] with lower < upper");
-  return {r[0].get<double>(), r[1].get<double>()};
-}
-
 // (s² + 2ζω s + ω²) or (s + ω) times `poly`, highest power first.
 std::vector<double> times_factor(const std::vector<double>& poly, const std::vector<double>& factor) {
   std::vector<double> out(poly.size() + factor.size() - 1, 0.0);
@@ -69,21 +55,25 @@ ProblemInfo FixedOrderHinfProblem::info() {
   return {"fixed_order_hinf",
           "H-infinity tuning of a fixed-order controller: fitness = closed-loop H-infinity norm (SLICOT AB13DD) of a "
           "tracking design's generalized plant, unstable loops penalised",
-          problem_keys(),
-          [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-            return std::unique_ptr<Problem>(new FixedOrderHinfProblem(spec, base_dir));
+          {ParamSpec::integer("order", 3, 1, 12, "order of the controller"),
+           ParamSpec::text("experiment", nullptr,
+                           "tracking experiment file whose design gives the plant; none = the "
+                           "reference design"),
+           ParamSpec::range("log10_gain", 0.0, 6.0, "search interval of log10 of the gain"),
+           ParamSpec::range("log10_omega", -3.0, 5.0, "search interval of log10 of each pole and zero frequency"),
+           ParamSpec::range("zeta", 0.05, 2.0, "search interval of each complex pair's damping")},
+          [](const Params& p, const std::filesystem::path& base_dir) {
+            return std::unique_ptr<Problem>(new FixedOrderHinfProblem(p, base_dir));
           }};
 }
 
-FixedOrderHinfProblem::FixedOrderHinfProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-  require_known_keys(spec, problem_keys(), "problem");
-  order_ = int(optional_number(spec, "order", 3, 1, 12, "problem"));
+FixedOrderHinfProblem::FixedOrderHinfProblem(const Params& p, const std::filesystem::path& base_dir) {
+  order_ = p.integer("order");
   ControllerDesign design;
   DesignOptions options;
   options.reduced_order = order_;
-  if (spec.contains("experiment")) {
-    if (!spec["experiment"].is_string()) throw InputError("problem.experiment: give a tracking experiment file");
-    const auto path = resolve_data_path(spec["experiment"].get<std::string>(), base_dir, "problem.experiment");
+  if (!p.is_auto("experiment")) {
+    const auto path = resolve_data_path(p.text("experiment"), base_dir, "problem.experiment");
     TrackingExperiment x = TrackingExperiment::load(path);
     x.design.reduced_order = order_;
     design = design_tracking(x).design;
@@ -95,8 +85,8 @@ FixedOrderHinfProblem::FixedOrderHinfProblem(const nlohmann::json& spec, const s
   plant_ = design.plant;
   reference_norm_ = design.reduced_check.norm;
   reference_method_ = design.reduction;
-  const auto omega = range(spec, "log10_omega", -3.0, 5.0), zeta = range(spec, "zeta", 0.05, 2.0);
-  add(bounds_, "log10_gain", range(spec, "log10_gain", 0.0, 6.0));
+  const auto omega = p.range("log10_omega"), zeta = p.range("zeta");
+  add(bounds_, "log10_gain", p.range("log10_gain"));
   add_roots(bounds_, "pole", order_, omega, zeta);
   add_roots(bounds_, "zero", order_ - 1, omega, zeta);
 }

@@ -35,7 +35,7 @@ namespace hystbench {
 class FixedOrderHinfProblem : public Problem {
  public:
   static ProblemInfo info();
-  FixedOrderHinfProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir);
+  FixedOrderHinfProblem(const Params& options, const std::filesystem::path& base_dir);
 
   std::string name() const override;
   const Bounds& bounds() const override { return bounds_; }

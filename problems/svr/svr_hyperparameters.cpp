@@ -13,23 +13,8 @@
 namespace hystbench {
 namespace {
 
-const std::vector<std::string>& problem_keys() {
-  static const std::vector<std::string> keys = {
-      "type",    "data",     "segment",       "columns", "lags",       "fitness", "folds",
-      "holdout", "cv_seed",  "max_rows",      "log10_epsilon", "log10_C", "log10_sigma"};
-  return keys;
-}
-
-// [lo, hi] from the spec, or the default box.
-void bound(const nlohmann::json& spec, const std::string& key, double lo, double hi, Bounds& b) {
-  if (spec.contains(key)) {
-    const auto& v = spec[key];
-    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
-        !(v[0].get<double>() < v[1].get<double>()))
-      throw InputError("problem." + key + ": give [lower, upper] with lower < upper");
-    lo = v[0].get<double>();
-    hi = v[1].get<double>();
-  }
+void add_bound(const Params& p, const std::string& key, Bounds& b) {
+  const auto [lo, hi] = p.range(key);
   const Eigen::Index i = b.lower.size();
   b.lower.conservativeResize(i + 1);
   b.upper.conservativeResize(i + 1);
@@ -48,47 +33,54 @@ ProblemInfo SvrHyperparameterProblem::info() {
   return {"svr_hyperparameters",
           "epsilon, C and sigma of the SVR model's stage 1 (log10 box), fitness = validation "
           "error of the one-step prediction (blocked CV, libsvm CV or free-run hold-out)",
-          problem_keys(),
-          [](const nlohmann::json& spec, const std::filesystem::path& base_dir) {
-            return std::unique_ptr<Problem>(new SvrHyperparameterProblem(spec, base_dir));
+          {ParamSpec::text("data", nullptr,
+                           "the training record (CSV with t, u, y), e.g. the 1 Hz record")
+               .require(),
+           ParamSpec::text("segment", "", "the segment of the record to train on; empty = all"),
+           ParamSpec::object("columns", "column names of t, u, y in the CSV"),
+           ParamSpec::object("lags", "input and output lags {\"m\": 4, \"n\": 4}"),
+           ParamSpec::choice("fitness", "blocked_cv", {"blocked_cv", "libsvm_cv", "freerun_holdout"},
+                             "validation error of the one-step prediction"),
+           ParamSpec::integer("folds", 5, 2, 100, "cross-validation folds"),
+           ParamSpec::real("holdout", 0.25, 0.05, 0.9, "share of the record held out (freerun_holdout)"),
+           ParamSpec::integer("cv_seed", 1, 0, 4294967295.0, "seed of libsvm's fold assignment"),
+           ParamSpec::integer("max_rows", 1000, 10, 1e7, "regression rows kept (decimated)"),
+           // Where libsvm answers in about a second at most (docs/svr.md#hyperparameters).
+           ParamSpec::range("log10_epsilon", -3, -1, "search interval of log10 epsilon"),
+           ParamSpec::range("log10_C", -1, 3, "search interval of log10 C"),
+           ParamSpec::range("log10_sigma", 1, 3, "search interval of log10 sigma")},
+          [](const Params& p, const std::filesystem::path& base_dir) {
+            return std::unique_ptr<Problem>(new SvrHyperparameterProblem(p, base_dir));
           }};
 }
 
-SvrHyperparameterProblem::SvrHyperparameterProblem(const nlohmann::json& spec,
+SvrHyperparameterProblem::SvrHyperparameterProblem(const Params& p,
                                                    const std::filesystem::path& base_dir) {
-  require_known_keys(spec, problem_keys(), "problem");
-  if (!spec.contains("data") || !spec["data"].is_string())
-    throw InputError("problem.data: give the training record (CSV with t, u, y), e.g. the 1 Hz record");
-  const ColumnMap columns = spec.contains("columns") ? ColumnMap::from_json(spec["columns"], "problem.columns")
-                                                     : ColumnMap{};
-  const SvrRecord record = read_svr_record(spec["data"].get<std::string>(),
-                                           optional_text(spec, "segment", "", "problem"), columns, base_dir,
-                                           "problem");
+  const ColumnMap columns =
+      p.is_auto("columns") ? ColumnMap{} : ColumnMap::from_json(p.value("columns"), "problem.columns");
+  const SvrRecord record = read_svr_record(p.text("data"), p.text("segment"), columns, base_dir, "problem");
   data_name_ = record.name;
   x_ = record.data.u;
   y_ = record.data.y;
-  const nlohmann::json lags = spec.value("lags", nlohmann::json::object());
+  const nlohmann::json lags = p.is_auto("lags") ? nlohmann::json::object() : p.value("lags");
+  require_known_keys(lags, {"m", "n"}, "problem.lags");
   lags_ = {int(optional_number(lags, "m", 4, 0, 50, "problem.lags")),
            int(optional_number(lags, "n", 4, 0, 50, "problem.lags"))};
-  const std::string fitness = optional_text(spec, "fitness", "blocked_cv", "problem");
-  if (fitness == "blocked_cv") fitness_ = Fitness::BlockedCv;
-  else if (fitness == "libsvm_cv") fitness_ = Fitness::LibsvmCv;
-  else if (fitness == "freerun_holdout") fitness_ = Fitness::FreerunHoldout;
-  else throw InputError("problem.fitness: give blocked_cv, libsvm_cv or freerun_holdout");
-  folds_ = int(optional_number(spec, "folds", 5, 2, 100, "problem"));
-  holdout_ = optional_number(spec, "holdout", 0.25, 0.05, 0.9, "problem");
-  cv_seed_ = unsigned(optional_number(spec, "cv_seed", 1, 0, 4294967295.0, "problem"));
+  const std::string fitness = p.text("fitness");
+  fitness_ = fitness == "blocked_cv" ? Fitness::BlockedCv
+             : fitness == "libsvm_cv" ? Fitness::LibsvmCv
+                                      : Fitness::FreerunHoldout;
+  folds_ = p.integer("folds");
+  holdout_ = p.real("holdout");
+  cv_seed_ = unsigned(p.real("cv_seed"));
   if (y_.size() < lags_.warmup() + 2 * folds_)
     throw InputError(data_name_ + ": " + std::to_string(y_.size()) + " samples are too few for lags m = " +
                      std::to_string(lags_.m) + ", n = " + std::to_string(lags_.n) + " and " +
                      std::to_string(folds_) + " folds");
   SvrHammerstein::regression_rows(x_, y_, lags_, rows_, targets_);
-  max_rows_ = Eigen::Index(optional_number(spec, "max_rows", 1000, 10, 1e7, "problem"));
+  max_rows_ = Eigen::Index(p.integer("max_rows"));
   SvrHammerstein::decimate(rows_, targets_, max_rows_);
-  // Where libsvm answers in about a second at most (docs/svr.md#hyperparameters).
-  bound(spec, "log10_epsilon", -3, -1, bounds_);
-  bound(spec, "log10_C", -1, 3, bounds_);
-  bound(spec, "log10_sigma", 1, 3, bounds_);
+  for (const char* key : {"log10_epsilon", "log10_C", "log10_sigma"}) add_bound(p, key, bounds_);
   // Every corner of the box must be a valid SVR, checked before any search.
   for (int corner = 0; corner < 8; ++corner) {
     auto at = [&](int i) { return (corner >> i) & 1 ? bounds_.upper[i] : bounds_.lower[i]; };

@@ -40,7 +40,7 @@ class SvrHyperparameterProblem : public Problem {
  public:
   static ProblemInfo info();
   // Throws InputError naming the key.
-  SvrHyperparameterProblem(const nlohmann::json& spec, const std::filesystem::path& base_dir);
+  SvrHyperparameterProblem(const Params& options, const std::filesystem::path& base_dir);
 
   std::string name() const override;
   const Bounds& bounds() const override { return bounds_; }

@@ -2,6 +2,7 @@
 // ours: same fitness through the wrapper, and every run spends its budget.
 #include <gtest/gtest.h>
 
+#include "benchmarks/peer/ga_replacement.hpp"
 #include "benchmarks/peer/hystbench_runs.hpp"
 #include "benchmarks/peer/pagmo_peer.hpp"
 #include "benchmarks/peer/problem_fitness.hpp"
@@ -58,7 +59,23 @@ TEST(PagmoPeer, PagmoRunsSpendTheirGenerations) {
     EXPECT_EQ(t.evaluations, 12 * (1 + 9)) << algorithm;
     EXPECT_LT(t.best, std::numeric_limits<double>::infinity()) << algorithm;
   }
+  const PeerTrial sbx = run_pagmo(box, {"sga-sbx", 12, 9, 3, static_cast<unsigned>(box.dimension())});
+  EXPECT_EQ(sbx.evaluations, 12 * (1 + 9));
+  EXPECT_THROW(run_pagmo(box, {"sga-sbx", 12, 9, 3}), std::invalid_argument);
   EXPECT_GT(run_pagmo_archipelago(box, {{"de", 12, 3, 1}, {"cmaes", 12, 3, 2}, {"sga", 12, 3, 3}}, 2), 0.0);
+}
+
+// Pooling parents and children is what makes pagmo's sga converge on the
+// sphere; with the same operators our "plus" GA lands in the same decade.
+// Measured here (20 000 evaluations, 3 trials, medians): generational 0.11,
+// plus 5.5e-3, pagmo 1.5e-3.
+TEST(PagmoPeer, GaPlusReplacementMatchesSgaOnTheSphere) {
+  const auto rows = ga_replacement_rows(20000, 3, 1);
+  ASSERT_EQ(rows.size(), 3u);
+  for (const PeerRow& r : rows) EXPECT_EQ(r.evaluations, 20000) << r.settings;
+  EXPECT_LT(rows[1].median_over_floor, rows[0].median_over_floor);
+  EXPECT_LT(rows[1].median_over_floor, 10 * rows[2].median_over_floor);
+  EXPECT_LT(rows[2].median_over_floor, 10 * rows[1].median_over_floor);
 }
 
 TEST(PagmoPeer, HystbenchRunsSpendTheBudget) {

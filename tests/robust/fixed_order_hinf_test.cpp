@@ -16,7 +16,7 @@ namespace hystbench {
 namespace {
 
 const FixedOrderHinfProblem& problem() {
-  static const FixedOrderHinfProblem p(nlohmann::json{{"type", "fixed_order_hinf"}}, ".");
+  static const FixedOrderHinfProblem p(problem_options({{"type", "fixed_order_hinf"}}), ".");
   return p;
 }
 

@@ -18,7 +18,7 @@
 #include <array>
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 #include "problems/hammerstein/effects/biquad.hpp"
 
@@ -49,7 +49,7 @@ SignatureValue arx_partial_r_squared(const ResidualView& r) {
   return {(with_output - own_past) / (1 - own_past), {{"chance", 3.0 / double(n)}}};
 }
 
-class Arx : public Effect {
+class Arx : public KernelEffect<Arx, 5, EffectDrive::None> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -58,7 +58,7 @@ class Arx : public Effect {
         "second-order discrete transfer function (b0 + b1 z⁻¹ + b2 z⁻²)/(1 + a1 z⁻¹ + a2 z⁻²), "
         "b0 fixed by unit static gain";
     i.citation =
-        "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (docs/design.md#hammerstein-seed-model)";
+        "Ljung, System Identification, 2nd ed., 1999; seed Hammerstein model (docs/models.md#hammerstein-seed-model)";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"a1", -2.0, 2.0, 0.0, 0, 0, "", "first denominator coefficient"},
@@ -76,33 +76,8 @@ class Arx : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext&,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    std::array<double, 5> c;
-    const EffectSetup s = setup(p, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    return std::isfinite(run(c, signal.data(), signal.size()));
-  }
-
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext&, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    run_lanes<5>(p, signal, ok, setup, [&](const std::array<LaneVector, 5>& c) {
-      return run(c, signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
-    std::array<double, 5> c;
-    return stepper_for(setup(p, c), [&] {
-      return kernel_stepper<BiquadState<double>>([c](BiquadState<double>& state, double signal,
-                                                     double) { return biquad_step(c, state, signal); });
-    });
-  }
-
- private:
   // c = (b0, b1, b2, a1, a2).
-  static EffectSetup setup(std::span<const double> p, std::array<double, 5>& c) {
+  static EffectSetup setup(std::span<const double> p, double, std::array<double, 5>& c) {
     const double a1 = p[0], a2 = p[1], b1 = p[2], b2 = p[3];
     for (double x : p)
       if (!std::isfinite(x)) return EffectSetup::Invalid;
@@ -112,11 +87,17 @@ class Arx : public Effect {
     return EffectSetup::Run;
   }
 
-  // In place; returns the last output sample.
   template <class V>
-  static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
-    BiquadState<V> state;
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = biquad_step(c, state, s[k]);
+  using State = BiquadState<V>;
+
+  template <class V>
+  static V sample(const std::array<V, 5>& c, NoAux, State<V>& state, V signal, double) {
+    return biquad_step(c, state, signal);
+  }
+
+  // The last output sample.
+  template <class V>
+  static V health(const std::array<V, 5>&, const State<V>& state) {
     return state.y1;
   }
 };

@@ -3,7 +3,7 @@
 //   F[k] = max(v[k] − r, min(v[k] + r, F[k-1])),   signal[k] = F[k]
 //
 // Initial state F[-1] = 0: the chain starts at rest with zero input
-// (docs/design.md#hammerstein-seed-model), so a record starting at |v[0]| > r starts on a branch.
+// (docs/models.md#hammerstein-seed-model), so a record starting at |v[0]| > r starts on a branch.
 // Neutral r = 0 (F = v exactly). A negative width is meaningless: apply
 // returns false. Units: r in u.
 #include <algorithm>

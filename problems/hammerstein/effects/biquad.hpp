@@ -24,4 +24,16 @@ inline V biquad_step(const std::array<V, 5>& c, BiquadState<V>& s, V w) {
   return y;
 }
 
+// A resonance 1 / (s²/ω² + 2ζs/ω + 1) under the bilinear map
+// s = (2/Ts)(z − 1)/(z + 1), multiplied by (z + 1)², has the denominator
+// (k² + q + 1, 2 − 2k², k² − q + 1) with k = 2/(ωTs) and q = 2ζk; msd and
+// second_mode build their sections from these terms.
+struct TustinResonance {
+  double k2, q, a0;  // k², q and the leading coefficient k² + q + 1
+};
+inline TustinResonance tustin_resonance(double k, double zeta) {
+  const double k2 = k * k, q = 2.0 * zeta * k;
+  return {k2, q, k2 + q + 1.0};
+}
+
 }  // namespace hystbench

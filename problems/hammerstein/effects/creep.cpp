@@ -16,7 +16,7 @@
 #include <array>
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace hystbench {
@@ -35,7 +35,7 @@ SignatureValue slow_input_correlation(const ResidualView& r) {
   return {correlation(r.e, first_order_lag(r.u, tau, r.sample_time)), {{"tau", tau}}};
 }
 
-class Creep : public Effect {
+class Creep : public KernelEffect<Creep, 1, EffectDrive::StageInput> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -58,38 +58,6 @@ class Creep : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    std::array<double, 1> c;
-    const EffectSetup s = setup(p, ctx.sample_time, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    return std::isfinite(run(c, ctx.sample_time, ctx.stage_input->data(), signal.data(), signal.size()));
-  }
-
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
-    const auto lane_setup = [&](std::span<const double> q, std::array<double, 1>& c) {
-      return setup(q, ctx.sample_time, c);
-    };
-    run_lanes<1>(p, signal, ok, lane_setup, [&](const std::array<LaneVector, 1>& c) {
-      return run(c, ctx.sample_time, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
-    std::array<double, 1> c;
-    return stepper_for(setup(p, ctx.sample_time, c), [&] {
-      return kernel_stepper<State<double>>(
-          [c, lags = lags_at(ctx.sample_time)](State<double>& state, double signal, double y0) {
-            return sample(c, lags, state, signal, y0);
-          });
-    });
-  }
-
- private:
   // c = (gamma).
   static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 1>& c) {
     const EffectSetup s = gain_like_setup(p, c);
@@ -97,11 +65,12 @@ class Creep : public Effect {
     return Ts > 0.0 && std::isfinite(Ts) ? EffectSetup::Run : EffectSetup::Invalid;
   }
 
-  // x_i[k] = a_i·x_i[k-1] + b_i·y0[k] for the sample time Ts.
+  // x_i[k] = a_i·x_i[k-1] + b_i·y0[k] for the sample time Ts, the same for
+  // every lane.
   struct Lags {
     std::array<double, 4> a, b;
   };
-  static Lags lags_at(double Ts) {
+  static Lags aux(double Ts) {
     Lags l{};
     for (std::size_t i = 0; i < l.a.size(); ++i) {
       l.a[i] = std::exp(-Ts / kTimeConstants[i]);
@@ -116,7 +85,7 @@ class Creep : public Effect {
     V x0{}, x1{}, x2{}, x3{};
   };
 
-  // One sample, shared by the batch and streaming forms.
+  // One sample.
   template <class V>
   static V sample(const std::array<V, 1>& c, const Lags& l, State<V>& x, V signal, V y0) {
     x.x0 = l.a[0] * x.x0 + l.b[0] * y0;
@@ -126,12 +95,9 @@ class Creep : public Effect {
     return signal + c[0] * ((x.x0 + x.x1) + (x.x2 + x.x3));
   }
 
-  // Returns the sum of the lag states at the end.
+  // The sum of the lag states.
   template <class V>
-  static V run(const std::array<V, 1>& c, double Ts, const V* y0, V* s, Eigen::Index n) {
-    const Lags l = lags_at(Ts);
-    State<V> x;
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, l, x, s[k], y0[k]);
+  static V health(const std::array<V, 1>&, const State<V>& x) {
     return x.x0 + x.x1 + x.x2 + x.x3;
   }
 };

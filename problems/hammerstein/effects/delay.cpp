@@ -12,7 +12,7 @@
 // neither the value nor the slope in d at integer d (its weight and the
 // weight's slope vanish there).
 // Samples before the record start are 0: the chain starts at rest with zero
-// input (docs/design.md#hammerstein-seed-model), as the hysteresis and
+// input (docs/models.md#hammerstein-seed-model), as the hysteresis and
 // dynamics states do.
 // Neutral d = 0 (exact pass-through). The delay is in samples, not seconds:
 // a delay fitted at one sample rate means a different time at another.

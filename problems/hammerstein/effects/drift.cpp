@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace hystbench {
@@ -19,7 +19,7 @@ namespace {
 // (Ljung, System Identification, 2nd ed., 1999, §16.6: residual analysis.)
 SignatureValue time_correlation(const ResidualView& r) { return {correlation(r.e, r.t)}; }
 
-class Drift : public Effect {
+class Drift : public KernelEffect<Drift, 1, EffectDrive::Time> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -34,50 +34,20 @@ class Drift : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    std::array<double, 1> c;
-    const EffectSetup s = gain_like_setup(p, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    if (!ctx.time || ctx.time->size() != signal.size()) return false;
-    run(c, ctx.time->data(), signal.data(), signal.size());
-    return true;
+  // c = (c1).
+  static EffectSetup setup(std::span<const double> p, double, std::array<double, 1>& c) {
+    return gain_like_setup(p, c);
   }
 
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    if (!ctx.time || std::size_t(ctx.time->size()) != signal.size()) return ok.fill(false);
-    run_lanes<1>(p, signal, ok, gain_like_setup, [&](const std::array<LaneVector, 1>& c) {
-      return run(c, ctx.time->data(), signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
-  // Time is k·Ts at sample k, counted by the stepper; the record's time
-  // column (from 0) equals it to rounding.
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
-    std::array<double, 1> c;
-    return stepper_for(gain_like_setup(p, c), [&] {
-      struct Clock {
-        double samples = 0.0;
-      };
-      return kernel_stepper<Clock>([c, ts = ctx.sample_time](Clock& clock, double signal, double) {
-        return sample(c, signal, ts * clock.samples++);
-      });
-    });
-  }
-
- private:
-  // One sample, shared by the batch and streaming forms: signal + c1·t.
+  // One sample: signal + c1·t.
   template <class V>
-  static V sample(const std::array<V, 1>& c, V signal, double t) {
+  static V sample(const std::array<V, 1>& c, NoAux, State<V>&, V signal, double t) {
     return signal + c[0] * t;
   }
 
-  // Returns c1.
+  // c1.
   template <class V>
-  static V run(const std::array<V, 1>& c, const double* t, V* s, Eigen::Index n) {
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, s[k], t[k]);
+  static V health(const std::array<V, 1>& c, const State<V>&) {
     return c[0];
   }
 };

@@ -5,7 +5,7 @@
 //
 // v is the stage input (the normalised drive after the input effects), so
 // the loop is driven by the drive, as h is by u in the seed model's
-// h1 = d1·u + d2·u² − h (docs/design.md#hammerstein-seed-model). A stands for
+// h1 = d1·u + d2·u² − h (docs/models.md#hammerstein-seed-model). A stands for
 // the seed's α·L: the two enter only as a product, so one parameter keeps the
 // direction identifiable.
 // The loop's branch slopes are set by A, its width saturates at about
@@ -18,8 +18,9 @@
 #include <array>
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
+#include "problems/hammerstein/bouc_wen.hpp"
 
 namespace hystbench {
 namespace {
@@ -36,7 +37,7 @@ SignatureValue input_loop_correlation(const ResidualView& r) {
   return {loop.correlation, {{"width", loop.width}}};
 }
 
-class Hysteresis : public Effect {
+class Hysteresis : public KernelEffect<Hysteresis, 3, EffectDrive::StageInput> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -44,7 +45,7 @@ class Hysteresis : public Effect {
     i.summary = "rate-independent Bouc-Wen hysteresis loop driven by the input increments";
     i.citation =
         "Bouc, Proc. 4th Conf. Nonlinear Oscillations, 1967; Wen, J. Eng. Mech. 102 (1976); "
-        "increment form as in the seed Hammerstein model (docs/design.md#hammerstein-seed-model)";
+        "increment form as in the seed Hammerstein model (docs/models.md#hammerstein-seed-model)";
     i.stage = EffectStage::Nonlinearity;
     i.params = {
         {"A", -10.0, 10.0, 0.0, 1, -1, "",
@@ -62,35 +63,8 @@ class Hysteresis : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    std::array<double, 3> c;
-    const EffectSetup s = setup(p, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    return std::isfinite(run(c, ctx.stage_input->data(), signal.data(), signal.size()));
-  }
-
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    if (ctx.stage_input.size() != signal.size()) return ok.fill(false);
-    run_lanes<3>(p, signal, ok, setup, [&](const std::array<LaneVector, 3>& c) {
-      return run(c, ctx.stage_input.data(), signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
-    std::array<double, 3> c;
-    return stepper_for(setup(p, c), [&] {
-      return kernel_stepper<State<double>>(
-          [c](State<double>& state, double signal, double v) { return sample(c, state, signal, v); });
-    });
-  }
-
- private:
   // c = (A, beta, gamma).
-  static EffectSetup setup(std::span<const double> p, std::array<double, 3>& c) {
+  static EffectSetup setup(std::span<const double> p, double, std::array<double, 3>& c) {
     c = {p[0], p[1], p[2]};
     if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) return EffectSetup::Invalid;
     return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
@@ -102,27 +76,21 @@ class Hysteresis : public Effect {
     V h{}, v_prev{};
   };
 
-  // One sample, shared by the batch and streaming forms: advances the loop
-  // with the drive v and returns the signal minus h.
+  // One sample: advances the loop with the drive v and returns the signal
+  // minus h.
   template <class V>
-  static V sample(const std::array<V, 3>& c, State<V>& state, V signal, V v) {
+  static V sample(const std::array<V, 3>& c, NoAux, State<V>& state, V signal, V v) {
     const V A = c[0], beta = c[1], gamma = c[2];
     const V dv = v - state.v_prev;
     state.v_prev = v;
-    state.h = (state.h * (1.0 - beta * lane_abs(dv)) + A * dv) - gamma * dv * lane_abs(state.h);
+    state.h = bouc_wen_step(state.h, dv, lane_abs(dv), beta, A, gamma);
     return signal - state.h;
   }
 
-  // One candidate (V = double) or a block (V = LaneVector); returns h at the end.
+  // h, which stays non-finite once it diverges: a block may stop early.
+  static constexpr bool kEarlyExit = true;
   template <class V>
-  static V run(const std::array<V, 3>& c, const V* v, V* s, Eigen::Index n) {
-    State<V> state;
-    for (Eigen::Index k = 0; k < n; ++k) {
-      s[k] = sample(c, state, s[k], v[k]);
-      // Once non-finite, h stays non-finite; checking now and then ends a
-      // diverging run early without a test on every sample.
-      if ((k & 1023) == 1023 && none_finite(state.h)) return state.h;
-    }
+  static V health(const std::array<V, 3>&, const State<V>& state) {
     return state.h;
   }
 };

@@ -23,7 +23,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 #include "problems/hammerstein/effects/biquad.hpp"
 
@@ -32,7 +32,7 @@ namespace {
 
 SignatureValue missing_resonance(const ResidualView& r);
 
-class Msd : public Effect {
+class Msd : public KernelEffect<Msd, 5, EffectDrive::None> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -42,7 +42,7 @@ class Msd : public Effect {
         "bilinear";
     i.citation =
         "Hassani, Tjahjowidodo & Do, Mech. Syst. Signal Process. 49 (2014); seed Hammerstein "
-        "model (docs/design.md#hammerstein-seed-model) for the bilinear discretisation";
+        "model (docs/models.md#hammerstein-seed-model) for the bilinear discretisation";
     i.stage = EffectStage::Dynamics;
     i.params = {
         {"period", 0.0, 0.2, 0.0, 0, 0, "s",
@@ -58,36 +58,6 @@ class Msd : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    std::array<double, 5> c;
-    const EffectSetup s = setup(p, ctx.sample_time, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    return std::isfinite(run(c, signal.data(), signal.size()));
-  }
-
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    const auto lane_setup = [&](std::span<const double> q, std::array<double, 5>& c) {
-      return setup(q, ctx.sample_time, c);
-    };
-    run_lanes<5>(p, signal, ok, lane_setup, [&](const std::array<LaneVector, 5>& c) {
-      return run(c, signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
-    std::array<double, 5> c;
-    return stepper_for(setup(p, ctx.sample_time, c), [&] {
-      return kernel_stepper<BiquadState<double>>(
-          [c](BiquadState<double>& state, double signal, double) {
-            return sample(c, state, signal);
-          });
-    });
-  }
-
- private:
   // c = (n0, n1, n2, a1, a2) of G = 1 - H.
   static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 5>& c) {
     const double period = p[0], zeta = p[1];
@@ -97,26 +67,24 @@ class Msd : public Effect {
     // With k = 2κ/Ts and q = 2ζk, substituting s = (2/Ts)(z−1)/(z+1) and
     // multiplying by (z+1)² gives G(z) = N(z)/D(z) with
     // N = (k² + q, −2k², k² − q), D = (k² + q + 1, 2 − 2k², k² − q + 1).
-    const double k = period / (std::numbers::pi * Ts);
-    const double k2 = k * k, q = 2.0 * zeta * k;
-    const double a0 = k2 + q + 1.0;
+    const auto [k2, q, a0] = tustin_resonance(period / (std::numbers::pi * Ts), zeta);
     c = {(k2 + q) / a0, -2.0 * k2 / a0, (k2 - q) / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
     if (!std::isfinite(c[3]) || !std::isfinite(c[4]) || !std::isfinite(c[0])) return EffectSetup::Invalid;
     return EffectSetup::Run;
   }
 
-  // One sample, shared by the batch and streaming forms: y = w − G·w, G·w
-  // from rest.
   template <class V>
-  static V sample(const std::array<V, 5>& c, BiquadState<V>& state, V w) {
+  using State = BiquadState<V>;
+
+  // One sample: y = w − G·w, G·w from rest.
+  template <class V>
+  static V sample(const std::array<V, 5>& c, NoAux, State<V>& state, V w, double) {
     return w - biquad_step(c, state, w);
   }
 
-  // In place; returns the last G·w.
+  // The last G·w.
   template <class V>
-  static V run(const std::array<V, 5>& c, V* s, Eigen::Index n) {
-    BiquadState<V> state;
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, state, s[k]);
+  static V health(const std::array<V, 5>&, const State<V>& state) {
     return state.y1;
   }
 };

@@ -1,7 +1,7 @@
 // Constant sensor offset: y + c0.
 #include <array>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace hystbench {
@@ -16,7 +16,7 @@ SignatureValue mean_over_std(const ResidualView& r) {
   return {r.e.mean() / standard_deviation(r.e)};
 }
 
-class Offset : public Effect {
+class Offset : public KernelEffect<Offset, 1, EffectDrive::None> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -30,40 +30,22 @@ class Offset : public Effect {
                    "the residual mean is {value} residual standard deviations"};
     return i;
   }
-  bool apply(std::span<const double> p, const SignalContext&,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    run(std::array<double, 1>{p[0]}, signal.data(), signal.size());
-    return true;
+
+  // c = (c0); every value runs, a non-finite one is caught by the model's
+  // final check.
+  static EffectSetup setup(std::span<const double> p, double, std::array<double, 1>& c) {
+    c = {p[0]};
+    return EffectSetup::Run;
   }
 
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
-    return kernel_stepper<Stateless>(
-        [c = std::array<double, 1>{p[0]}](Stateless&, double signal, double) { return sample(c, signal); });
-  }
-
-  bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext&, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    const auto setup = [](std::span<const double> q, std::array<double, 1>& c) {
-      c = {q[0]};
-      return EffectSetup::Run;
-    };
-    run_lanes<1>(p, signal, ok, setup, [&](const std::array<LaneVector, 1>& c) {
-      return run(c, signal.data(), Eigen::Index(signal.size()));
-    });
-  }
-
- private:
-  // One sample, shared by the batch and streaming forms.
+  // One sample: signal + c0.
   template <class V>
-  static V sample(const std::array<V, 1>& c, V signal) {
+  static V sample(const std::array<V, 1>& c, NoAux, State<V>&, V signal, double) {
     return signal + c[0];
   }
 
-  // A non-finite offset is caught by the model's final check, as in apply().
   template <class V>
-  static V run(const std::array<V, 1>& c, V* s, Eigen::Index n) {
-    for (Eigen::Index k = 0; k < n; ++k) s[k] = sample(c, s[k]);
+  static V health(const std::array<V, 1>&, const State<V>&) {
     return V{};
   }
 };

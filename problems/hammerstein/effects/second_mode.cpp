@@ -21,6 +21,7 @@
 
 #include "framework/model/effect.hpp"
 #include "framework/model/spectrum.hpp"
+#include "problems/hammerstein/effects/biquad.hpp"
 
 namespace hystbench {
 namespace {
@@ -124,9 +125,7 @@ class SecondMode : public Effect {
     if (!(zeta > 0.0) || !(Ts > 0.0) || !std::isfinite(Ts)) return EffectSetup::Invalid;
     // k = 2κ/Ts; H2(z) = (1, 2, 1) / (k² + q + 1, 2 − 2k², k² − q + 1), q = 2ζk.
     const double omega = 2.0 * std::numbers::pi * std::pow(10.0, log10_f);
-    const double k = 2.0 / (omega * Ts);
-    const double k2 = k * k, q = 2.0 * zeta * k;
-    const double a0 = k2 + q + 1.0;
+    const auto [k2, q, a0] = tustin_resonance(2.0 / (omega * Ts), zeta);
     c = {g, 1.0 / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
     if (!std::isfinite(c.a1) || !std::isfinite(c.a2) || !(c.b > 0.0)) return EffectSetup::Invalid;
     return EffectSetup::Run;

@@ -1,11 +1,8 @@
-#include "problems/hammerstein/synthetic_data.hpp"
-
-#include <cmath>
+#include "problems/hammerstein/hammerstein_synthetic_data.hpp"
 
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
-#include "framework/core/rng.hpp"
-#include "problems/hammerstein/excitation.hpp"
+#include "framework/io/excitation.hpp"
 
 namespace hystbench {
 
@@ -22,13 +19,6 @@ HammersteinParams read_hammerstein_params(const nlohmann::json& j, const std::st
     x[i] = values[names[i]].get<double>();
   }
   return HammersteinParams::from_vector(x);
-}
-
-double add_relative_noise(Eigen::VectorXd& y, double relative, std::uint64_t seed) {
-  const double sd = relative * std::sqrt(y.squaredNorm() / double(y.size()));
-  Rng rng(seed);
-  for (Eigen::Index k = 0; k < y.size(); ++k) y[k] += sd * rng.normal();
-  return sd;
 }
 
 SyntheticData make_synthetic_data(const HammersteinParams& params, BoucWenForm form,

@@ -1,25 +1,16 @@
 #pragma once
-// Synthetic measurements from known parameters: the model's response to an
-// excitation plus seeded Gaussian noise, and the "truth" record that makes
-// the noise floor known.
+// Synthetic measurements from known parameters of the 13-parameter seed
+// model (framework/io/synthetic_data.hpp says what they hold).
 #include <nlohmann/json.hpp>
 
-#include "framework/io/measurement.hpp"
+#include "framework/io/synthetic_data.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"
 
 namespace hystbench {
 
-struct SyntheticData {
-  Measurement data;
-  nlohmann::json truth;  // parameters, noise, noise-floor SSE, excitation
-};
-
 // Reads {"alpha": .., ..., "d": ..} or a truth file {"parameters": {...}}.
 // Every one of the 13 names is required. Throws InputError naming the key.
 HammersteinParams read_hammerstein_params(const nlohmann::json& j, const std::string& where);
-
-// Adds seeded Gaussian noise of sd relative·RMS(y) to y; returns the sd.
-double add_relative_noise(Eigen::VectorXd& y, double relative, std::uint64_t seed);
 
 // noise_relative: noise standard deviation as a fraction of the RMS of the
 // noise-free output. The truth's "noise_floor_sse" is the fitness of the true

@@ -1,4 +1,4 @@
-#include "framework/io/trial_log.hpp"
+#include "framework/harness/trial_log.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "problems/hammerstein/excitation.hpp"
+#include "framework/io/excitation.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "framework/discovery/segment_runs.hpp"
+#include "framework/io/segment_runs.hpp"
 
 #include <algorithm>
 

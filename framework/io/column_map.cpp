@@ -1,0 +1,80 @@
+// ColumnMap from the --columns option and from JSON: every mistake names
+// the entry and the valid roles.
+#include "framework/io/column_map.hpp"
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/core/error.hpp"
+#include "framework/io/measurement_csv_lines.hpp"
+
+namespace hystbench {
+namespace {
+
+using measurement_csv::trim;
+
+constexpr const char* kRoleList = "t, u, y, segment";
+
+std::string* role_field(ColumnMap& map, std::string_view role) {
+  if (role == "t") return &map.t;
+  if (role == "u") return &map.u;
+  if (role == "y") return &map.y;
+  if (role == "segment") return &map.segment;
+  return nullptr;
+}
+
+}  // namespace
+
+ColumnMap ColumnMap::parse(const std::string& spec) {
+  ColumnMap map;
+  if (trim(spec).empty()) return map;
+  std::vector<std::string_view> seen;
+  std::string_view rest = spec;
+  for (;;) {
+    const std::size_t comma = std::min(rest.find(','), rest.size());
+    const std::string_view entry = trim(rest.substr(0, comma));
+    const std::size_t eq = entry.find('=');
+    const std::string quoted = "--columns: entry '" + std::string(entry) + "'";
+    if (eq == std::string_view::npos || trim(entry.substr(eq + 1)).empty())
+      throw InputError(quoted + " is not role=name; write e.g. t=t_s,u=u_N,y=y_m with roles " +
+                       kRoleList);
+    const std::string_view role = trim(entry.substr(0, eq));
+    std::string* field = role_field(map, role);
+    if (!field)
+      throw InputError(quoted + ": unknown role '" + std::string(role) + "'; valid roles: " +
+                       kRoleList);
+    if (std::find(seen.begin(), seen.end(), role) != seen.end())
+      throw InputError(quoted + ": role '" + std::string(role) + "' is given twice");
+    seen.push_back(role);
+    *field = std::string(trim(entry.substr(eq + 1)));
+    if (comma == rest.size()) break;
+    rest.remove_prefix(comma + 1);
+  }
+  return map;
+}
+
+ColumnMap ColumnMap::from_json(const nlohmann::json& j, const std::string& where) {
+  ColumnMap map;
+  if (j.is_null()) return map;
+  if (!j.is_object())
+    throw InputError(where + ": expected an object of column names such as "
+                             "{\"t\": \"t_s\", \"u\": \"u_N\", \"y\": \"y_m\"}, got " + j.dump());
+  for (const auto& [key, value] : j.items()) {
+    std::string* field = role_field(map, key);
+    if (!field)
+      throw InputError(where + "." + key + ": unknown column role; valid roles: " + kRoleList);
+    if (!value.is_string() || value.get_ref<const std::string&>().empty())
+      throw InputError(where + "." + key + ": expected a column name (non-empty text), got " +
+                       value.dump());
+    *field = value.get<std::string>();
+  }
+  return map;
+}
+
+nlohmann::json ColumnMap::to_json() const {
+  return {{"t", t}, {"u", u}, {"y", y}, {"segment", segment}};
+}
+
+}  // namespace hystbench

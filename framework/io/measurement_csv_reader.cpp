@@ -1,0 +1,211 @@
+// Reading a measurement CSV: the file's text, the header row and the data
+// rows, with a message naming file, line and column for every mistake.
+#include "framework/io/measurement.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "framework/core/error.hpp"
+#include "framework/io/measurement_csv_lines.hpp"
+#include "framework/io/measurement_csv_rows.hpp"
+
+namespace hystbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+using measurement_csv::fail;
+using measurement_csv::Header;
+using measurement_csv::LineReader;
+using measurement_csv::Location;
+using measurement_csv::Rows;
+using measurement_csv::split_csv_line;
+using measurement_csv::to_measurement;
+
+// Squares of larger values, summed over a record, overflow a double.
+constexpr double kLargestValue = 1e150;
+constexpr const char* kColumnsHint = "--columns t=t_s,u=u_N,y=y_m";
+// Files saved where the decimal separator is a comma: what they are and how to fix them.
+constexpr const char* kCommaSeparatedPoints =
+    "hystbench reads comma-separated files with decimal points (1.5, not 1,5)";
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "'" : ", '") + s + "'";
+  return out;
+}
+
+std::string read_text(const fs::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw InputError(name + ": file not found; check the path (a relative path starts at the "
+                            "current folder)");
+  if (fs::is_directory(path, ec))
+    throw InputError(name + ": is a folder; give the path of a measurement CSV file");
+  std::ifstream in(path, std::ios::binary);
+  const auto size = fs::file_size(path, ec);
+  if (!in || ec) throw InputError(name + ": cannot open the file; check that it is readable");
+  std::string text(size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (in.gcount() != static_cast<std::streamsize>(size))
+    throw InputError(name + ": reading the file failed; check that it is readable");
+  return text;
+}
+
+// "1,5" or "-0,25": digits on both sides of one comma, as written in a
+// locale with decimal commas.
+bool decimal_comma(std::string_view field) {
+  if (!field.empty() && (field[0] == '-' || field[0] == '+')) field.remove_prefix(1);
+  const auto comma = field.find(',');
+  const auto digits = [](std::string_view s) {
+    return !s.empty() &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  return comma != std::string_view::npos && digits(field.substr(0, comma)) &&
+         digits(field.substr(comma + 1));
+}
+
+double parse_number(std::string_view field, const Location& at, const std::string& column) {
+  if (field.empty()) fail(at, column, "the value is empty; every row needs a number here");
+  std::string_view digits = field;
+  // from_chars rejects a leading '+', which spreadsheets sometimes write.
+  if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  const std::string quoted = "'" + std::string(field) + "'";
+  if (ec == std::errc::result_out_of_range)
+    fail(at, column, quoted + " is out of the range of a double; rescale the column (other units)");
+  if (ec != std::errc{} || end != digits.data() + digits.size()) {
+    if (decimal_comma(field))
+      fail(at, column, quoted + " is not a number: it seems to be written with a decimal comma; " +
+                           kCommaSeparatedPoints + ". Write the numbers with '.' instead");
+    fail(at, column, quoted + " is not a number; fix the value or comment the line out with '#'");
+  }
+  if (!std::isfinite(value))
+    fail(at, column,
+         quoted + " is not a finite number (NaN and Inf are not allowed); fix or remove the row");
+  if (std::abs(value) > kLargestValue)
+    fail(at, column, quoted + " is too large: squared errors of values beyond 1e150 overflow; "
+                              "rescale the column (other units)");
+  return value;
+}
+
+// Significant digits as written ("54.6106667" has 9). Bounds how much the
+// writer rounded the value, which the sample-step check must tolerate.
+int significant_digits(std::string_view field) {
+  int n = 0;
+  for (const char c : field) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') ++n;
+    if (c == '0' && n > 0) ++n;
+  }
+  return n;
+}
+
+std::optional<std::size_t> find_column(const std::vector<std::string>& names,
+                                       const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - names.begin());
+}
+
+void check_unique(const std::vector<std::string>& names, const Location& at) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto first = find_column(names, names[i]);
+    if (*first != i)
+      fail(at, names[i], "appears twice in the header (fields " + std::to_string(*first + 1) +
+                             " and " + std::to_string(i + 1) + "); rename one of them");
+  }
+}
+
+std::size_t require_column(const std::vector<std::string>& names, const std::string& name,
+                           const char* role, const Location& at) {
+  if (const auto index = find_column(names, name)) return *index;
+  fail(at, "the header has no column '" + name + "' (for " + role + "); its columns are " +
+               join(names) + ". Tell which columns hold t, u and y with the --columns option, " +
+               "e.g. " + kColumnsHint);
+}
+
+Header read_header(LineReader& reader, std::vector<std::string>& fields, const ColumnMap& map,
+                   const std::string& file) {
+  const auto line = reader.next();
+  if (!line)
+    fail({file}, "no header row: the file is empty or holds only blank and '#' lines; it needs "
+                 "a header such as t,u,y and one row per sample");
+  const Location at{file, reader.line_number()};
+  split_csv_line(*line, fields, at);
+  // Before the column checks, which would blame the names: the whole header is one name.
+  if (fields.size() == 1 && fields[0].find(';') != std::string::npos)
+    fail(at, "the header '" + fields[0] + "' seems to use ';' as the delimiter; " +
+                 kCommaSeparatedPoints + ". Save the file as comma-separated with '.' in numbers, " +
+                 "or convert it, e.g. sed 's/,/./g; s/;/,/g'");
+  check_unique(fields, at);
+  Header h;
+  h.names = fields;
+  h.line = at.line;
+  h.t = require_column(h.names, map.t, "t", at);
+  h.u = require_column(h.names, map.u, "u", at);
+  h.y = require_column(h.names, map.y, "y", at);
+  h.segment = find_column(h.names, map.segment);
+  return h;
+}
+
+// A row split into too many fields without a single decimal point: its
+// numbers were most likely written with decimal commas ("0,001,1,5" for
+// 0.001, 1.5).
+bool split_decimal_commas(const std::vector<std::string>& fields, const Header& h) {
+  return fields.size() > h.names.size() &&
+         std::none_of(fields.begin(), fields.end(),
+                      [](const std::string& f) { return f.find('.') != std::string::npos; });
+}
+
+void read_row(const std::vector<std::string>& fields, const Header& h, const Location& at,
+              Rows& rows) {
+  if (split_decimal_commas(fields, h))
+    fail(at, "the row has " + std::to_string(fields.size()) + " fields but the header (line " +
+                 std::to_string(h.line) + ") has " + std::to_string(h.names.size()) +
+                 ", and no decimal point: the file seems to use decimal commas; " +
+                 kCommaSeparatedPoints + ". Write the numbers with '.' instead");
+  if (fields.size() != h.names.size())
+    fail(at, "the row has " + std::to_string(fields.size()) + " fields but the header (line " +
+                 std::to_string(h.line) + ") has " + std::to_string(h.names.size()) +
+                 "; check for a missing or extra comma");
+  rows.t.push_back(parse_number(fields[h.t], at, h.names[h.t]));
+  rows.u.push_back(parse_number(fields[h.u], at, h.names[h.u]));
+  rows.y.push_back(parse_number(fields[h.y], at, h.names[h.y]));
+  if (h.segment) rows.segment.push_back(fields[*h.segment]);
+  rows.line.push_back(at.line);
+  rows.time_digits = std::max(rows.time_digits, significant_digits(fields[h.t]));
+}
+
+}  // namespace
+
+Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns) {
+  return parse_measurement(read_text(path), path.string(), columns);
+}
+
+Measurement parse_measurement(std::string_view text, const std::string& file,
+                              const ColumnMap& columns) {
+  LineReader reader(text);
+  std::vector<std::string> fields;
+  const Header header = read_header(reader, fields, columns, file);
+  Rows rows;
+  while (const auto line = reader.next()) {
+    const Location at{file, reader.line_number()};
+    split_csv_line(*line, fields, at);
+    read_row(fields, header, at, rows);
+  }
+  return to_measurement(rows, header, file);
+}
+
+}  // namespace hystbench

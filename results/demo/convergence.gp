@@ -1,0 +1,39 @@
+# convergence.gp: best-so-far fitness against function evaluations, one median
+# line and one interquartile band per algorithm
+#
+# Reads convergence.dat (the finite rows of convergence.csv; per algorithm
+# one index block for the median line and one for the band: evaluations q25 median q75).
+# To re-render after editing, run inside this folder:
+#     gnuplot convergence.gp
+# It writes convergence.svg, convergence.png and convergence.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+set title "Convergence — demo (hammerstein(default.csv))"."\n"."median and interquartile range over 10 trials" noenhanced
+set xlabel "Function evaluations"
+set ylabel "Best-so-far fitness (SSE)"
+set logscale xy
+set format x "10^{%L}"
+# The axis ends at the last evaluation rather than the next decade.
+set xrange [1:*]
+set autoscale xfixmax
+set format y "10^{%L}"
+noise_floor = 12044.9524  # SSE of the true parameters
+# Fitness axis from the data to 3x the highest median after 1 % of the budget.
+set yrange [*:69369393.69]
+set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
+# Curves fall from the upper left, so the lower left stays free.
+set key bottom left opaque box spacing 1.2 samplen 2.5
+set style fill transparent solid 0.25 noborder
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "convergence.".ext
+  plot \
+    "convergence.dat" index 1 using 1:2:4 with filledcurves lc rgb "#0072B2" notitle, \
+    "convergence.dat" index 0 using 1:3 with lines lw 2 dt 1 lc rgb "#0072B2" title "DE" noenhanced, \
+    noise_floor with lines lw 1.5 dt 2 lc rgb "#404040" title "noise floor"
+}
+unset output

@@ -1,0 +1,65 @@
+# fit_DE_time.gp: measured and model output over time (top), residual (bottom)
+#
+# Reads fit_DE.csv (t,u,y_measured,y_model,residual[,segment]).
+# To re-render after editing, run inside this folder:
+#     gnuplot fit_DE_time.gp
+# It writes fit_DE_time.svg, fit_DE_time.png and fit_DE_time.pdf: the plot commands
+# sit once inside the loop over these three formats at the end.
+
+set encoding utf8
+input_label = "Input u [V]"
+output_label = "Output y [µm]"
+residual_label = "Residual\n" . "y − ŷ [µm]"
+
+do for [ext in "svg png pdf"] {
+  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  set output "fit_DE_time.".ext
+  set datafile separator comma
+  set multiplot
+  set yrange [*:*]
+  set autoscale fix
+  set lmargin 10
+  set rmargin 2
+  set origin 0, 0.38
+  set size 1, 0.62
+  set tmargin 4
+  set bmargin 0.5
+  set title "Best fit of DE on hammerstein(default.csv)" noenhanced offset 0, 1.2
+  set offsets 0, 0, graph 0.45, graph 0.05
+  set label "sine_1Hz" at 1, graph 0.92 center noenhanced
+  set arrow from 2, graph 0 to 2, graph 1 nohead lc rgb "#a0a0a0" dt 2 back
+  set label "sine_2Hz" at 3, graph 0.81 center noenhanced
+  set arrow from 4, graph 0 to 4, graph 1 nohead lc rgb "#a0a0a0" dt 2 back
+  set label "sine_5Hz" at 5, graph 0.92 center noenhanced
+  set arrow from 6, graph 0 to 6, graph 1 nohead lc rgb "#a0a0a0" dt 2 back
+  set label "sine_10Hz" at 7, graph 0.81 center noenhanced
+  set arrow from 8, graph 0 to 8, graph 1 nohead lc rgb "#a0a0a0" dt 2 back
+  set label "sine_20Hz" at 8.75, graph 0.92 center noenhanced
+  set arrow from 9.5, graph 0 to 9.5, graph 1 nohead lc rgb "#a0a0a0" dt 2 back
+  set label "sine_50Hz" at 10.2495, graph 0.81 center noenhanced
+  set format x ""
+  unset xlabel
+  set ylabel output_label
+  set ytics 0, 100, 234.6655027
+  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
+  plot "fit_DE.csv" skip 1 using 1:3 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
+       "fit_DE.csv" skip 1 using 1:4 with lines lw 1 lc rgb "#0072B2" title "model"
+  unset label
+  unset title
+  unset key
+  set origin 0, 0
+  set size 1, 0.38
+  set tmargin 0.5
+  set bmargin 3.2
+  set format x "% h"
+  set xlabel "Time t [s]"
+  set ylabel residual_label
+  set yrange [-5.120398106:5.120398106]
+  set ytics -2, 2, 2
+  plot "fit_DE.csv" skip 1 using 1:5 with lines lw 1 lc rgb "#D55E00" notitle
+  unset multiplot
+  unset arrow
+}
+unset output
