@@ -84,12 +84,16 @@ class Effect {
                      Eigen::Ref<Eigen::VectorXd> signal) const = 0;
 
   // Optional batched form (effect_lanes.hpp): kEffectLanes candidates at
-  // once. Must leave every lane exactly as apply() leaves it and clear ok[l]
-  // where apply() would return false. A model all of whose effects have it
-  // evaluates candidates in blocks; otherwise one at a time.
+  // once, run a chunk of samples at a time. Over all chunks it must leave
+  // every lane exactly as apply() leaves it and clear ok[l] (here or in
+  // finish()) where apply() would return false. A model all of whose
+  // effects have it evaluates candidates in blocks; otherwise one at a time.
+  // kernel_effect.hpp writes it from the effect's per-sample kernel.
   virtual bool has_lanes() const { return false; }
-  virtual void apply_lanes(const LaneParams& /*p*/, const LaneContext& /*ctx*/,
-                           std::span<LaneVector> /*signal*/, LaneMask& /*ok*/) const {}
+  virtual std::unique_ptr<LaneRun> lane_run(const LaneParams& /*p*/, double /*sample_time*/,
+                                            LaneMask& /*ok*/) const {
+    return nullptr;
+  }
 
   // Streaming form (effect_stepper.hpp): the effect one sample at a time,
   // for StreamingModel. Null when `p` is invalid. The default replays

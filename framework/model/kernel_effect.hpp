@@ -23,6 +23,7 @@
 #include <cmath>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "framework/model/effect.hpp"
 
@@ -46,16 +47,8 @@ class KernelEffect : public Effect {
   }
 
   bool has_lanes() const override { return true; }
-  void apply_lanes(const LaneParams& p, const LaneContext& ctx, std::span<LaneVector> signal,
-                   LaneMask& ok) const override {
-    const auto* drive = lane_drive(ctx, signal.size());
-    if (Drive != EffectDrive::None && !drive) return ok.fill(false);
-    const auto setup = [&](std::span<const double> q, std::array<double, K>& c) {
-      return D::setup(q, ctx.sample_time, c);
-    };
-    run_lanes<K>(p, signal, ok, setup, [&](const std::array<LaneVector, K>& c) {
-      return run(c, D::aux(ctx.sample_time), drive, signal.data(), Eigen::Index(signal.size()));
-    });
+  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, double sample_time, LaneMask& ok) const override {
+    return std::make_unique<KernelLaneRun>(p, sample_time, ok);
   }
 
   // In a stream, time is k·Ts at sample k, counted here; a record's time
@@ -96,30 +89,86 @@ class KernelEffect : public Effect {
       return nullptr;
   }
 
-  // The stage input is a block signal (one value per lane), time one column.
-  static auto lane_drive(const LaneContext& ctx, std::size_t n) {
-    if constexpr (Drive == EffectDrive::StageInput)
-      return ctx.stage_input.size() == n ? ctx.stage_input.data() : nullptr;
-    else if constexpr (Drive == EffectDrive::Time)
-      return ctx.time && std::size_t(ctx.time->size()) == n ? ctx.time->data() : nullptr;
-    else
-      return static_cast<const double*>(nullptr);
-  }
+  // A block of candidates, one per lane, its state carried across chunks.
+  // Lanes that do not run keep their signal bit for bit.
+  class KernelLaneRun final : public LaneRun {
+   public:
+    KernelLaneRun(const LaneParams& p, double Ts, LaneMask& ok)
+        : setup_(p, ok, [Ts](std::span<const double> q, std::array<double, K>& c) {
+            return D::setup(q, Ts, c);
+          }),
+          aux_(D::aux(Ts)) {}
 
-  // One candidate (V = double) or a block (V = LaneVector); returns health.
-  template <class V, class Aux, class In>
-  static V run(const std::array<V, K>& c, const Aux& aux, const In* drive, V* s, Eigen::Index n) {
-    typename D::template State<V> state{};
+    void run(std::span<LaneVector> signal, const LaneChunk& chunk) override {
+      if constexpr (Drive == EffectDrive::Time) missing_time_ = missing_time_ || !chunk.time;
+      if (!setup_.any || stopped_ || missing_time_) return;
+      if (!setup_.all) kept_.assign(signal.begin(), signal.end());
+      stopped_ = !advance(setup_.coefficients, aux_, state_, drive(chunk), signal.data(), chunk.begin,
+                          Eigen::Index(signal.size()));
+      if (!setup_.all) setup_.restore_idle(kept_, signal);
+    }
+
+    void finish(LaneMask& ok) const override {
+      if (missing_time_) return ok.fill(false);
+      if (!setup_.any) return;
+      const LaneVector last = D::health(setup_.coefficients, state_);
+      for (int l = 0; l < kEffectLanes; ++l)
+        if (setup_.running[l] && !std::isfinite(last[l])) ok[l] = false;
+    }
+
+    bool reads_stage_input() const override { return Drive == EffectDrive::StageInput; }
+
+   private:
+    static auto drive(const LaneChunk& chunk) {
+      if constexpr (Drive == EffectDrive::StageInput)
+        return chunk.stage_input.data();
+      else
+        return chunk.time;  // time, or unused
+    }
+
+    LaneSetup<K> setup_;
+    decltype(D::aux(0.0)) aux_;
+    typename D::template State<LaneVector> state_{};
+    std::vector<LaneVector> kept_;
+    bool stopped_ = false;  // every running lane diverged: the rest is skipped
+    bool missing_time_ = false;  // the data have no time axis
+  };
+
+  // Samples [first, first + n) of one candidate (V = double) or a block
+  // (V = LaneVector), s and drive pointing at sample `first`. Returns false
+  // when the effect stopped early because every lane diverged.
+  template <class V, class Aux, class State, class In>
+  static bool advance(const std::array<V, K>& coefficients, const Aux& aux, State& carried, const In* drive,
+                      V* s, Eigen::Index first, Eigen::Index n) {
+    // Local copies: the signal cannot alias them, so the recurrence's state
+    // stays in registers instead of being stored and reloaded every sample.
+    const std::array<V, K> c = coefficients;
+    State state = carried;
+    struct WriteBack {
+      State& to;
+      const State& from;
+      ~WriteBack() { to = from; }
+    } write_back{carried, state};
     for (Eigen::Index k = 0; k < n; ++k) {
       if constexpr (Drive == EffectDrive::None)
         s[k] = D::sample(c, aux, state, s[k], 0.0);
       else
         s[k] = D::sample(c, aux, state, s[k], drive[k]);
-      // A non-finite state stays non-finite; checking now and then ends a
-      // diverging run early without a test on every sample.
+      // A non-finite state stays non-finite; checking now and then (at the
+      // same samples of the record, whatever the chunks) ends a diverging
+      // run early without a test on every sample.
       if constexpr (D::kEarlyExit)
-        if ((k & 1023) == 1023 && none_finite(D::health(c, state))) break;
+        if (((first + k) & 1023) == 1023 && none_finite(D::health(c, state))) return false;
     }
+    return true;
+  }
+
+  // The whole record of one candidate; returns health.
+  template <class Aux>
+  static double run(const std::array<double, K>& c, const Aux& aux, const double* drive, double* s,
+                    Eigen::Index n) {
+    typename D::template State<double> state{};
+    advance(c, aux, state, drive, s, 0, n);
     return D::health(c, state);
   }
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "framework/core/error.hpp"
@@ -209,36 +210,74 @@ bool Model::has_lanes() const {
                      [](const ChainEntry& e) { return e.effect->has_lanes(); });
 }
 
-void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data,
-                           std::vector<LaneVector>& y, LaneMask& ok) const {
-  const Eigen::Index n = data.size();
-  y.resize(n);
-  for (Eigen::Index k = 0; k < n; ++k) y[k] = LaneVector{} + data.u[k];
-  ok.fill(true);
-  std::vector<LaneVector> stage_input = y;
-  LaneContext ctx{data.sample_time, &data.t, stage_input, substeps_, input_hold_};
-  auto run_stage = [&](EffectStage stage) {
-    for (const auto& e : entries_) {
-      if (e.info->stage != stage) continue;
-      LaneParams p;
-      for (int l = 0; l < kEffectLanes; ++l) p[l] = {X.col(l).data() + e.offset, e.info->params.size()};
-      e.effect->apply_lanes(p, ctx, y, ok);
-    }
+namespace {
+
+// Samples per chunk of simulate_lanes(): a block's signals of one chunk (the
+// signal, the stage input, an effect's copy of idle lanes) take a few
+// hundred kB, well inside a core's L2.
+constexpr Eigen::Index kLaneChunk = 1024;
+
+using LaneRuns = std::vector<std::unique_ptr<LaneRun>>;
+
+// One chunk of a block through the chain, as simulate() runs a record: each
+// stage sees what entered it as its stage input (copied only for a stage
+// with an effect that reads it), the gain between input and nonlinearity.
+void run_chunk(const std::vector<Model::ChainEntry>& chain, LaneRuns& runs, const LaneVector& gain,
+               std::span<LaneVector> y, std::span<LaneVector> stage_input, const LaneChunk& chunk) {
+  const auto enter = [&](EffectStage stage) {
+    bool read = false;
+    for (std::size_t i = 0; i < chain.size(); ++i)
+      read = read || (chain[i].info->stage == stage && runs[i]->reads_stage_input());
+    if (read) std::copy(y.begin(), y.end(), stage_input.begin());
   };
-  // Copies into the same buffer: ctx.stage_input keeps pointing at it.
-  const auto enter_stage = [&] { std::copy(y.begin(), y.end(), stage_input.begin()); };
+  const auto run_stage = [&](EffectStage stage) {
+    for (std::size_t i = 0; i < chain.size(); ++i)
+      if (chain[i].info->stage == stage) runs[i]->run(y, chunk);
+  };
+  enter(EffectStage::Input);
   run_stage(EffectStage::Input);
-  enter_stage();
-  LaneVector gain{};
-  for (int l = 0; l < kEffectLanes; ++l) gain[l] = X(0, l);
+  enter(EffectStage::Nonlinearity);
   for (auto& v : y) v *= gain;
   run_stage(EffectStage::Nonlinearity);
   for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output}) {
-    enter_stage();
+    enter(stage);
     run_stage(stage);
   }
-  for (const auto& v : y)
-    for (int l = 0; l < kEffectLanes; ++l) ok[l] = ok[l] && std::isfinite(v[l]);
+}
+
+// Clears ok[l] where a sample of lane l is not finite (|v| < inf is false
+// for infinities and NaN alike).
+void check_finite(std::span<const LaneVector> y, LaneMask& ok) {
+  LaneBits finite = LaneBits{} - 1;
+  for (const auto& v : y) finite &= lane_abs(v) < std::numeric_limits<double>::infinity();
+  for (int l = 0; l < kEffectLanes; ++l) ok[l] = ok[l] && finite[l] != 0;
+}
+
+}  // namespace
+
+void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data, LaneMask& ok,
+                           const LaneSink& sink) const {
+  ok.fill(true);
+  LaneRuns runs;
+  for (const auto& e : entries_) {
+    LaneParams p;
+    for (int l = 0; l < kEffectLanes; ++l) p[l] = {X.col(l).data() + e.offset, e.info->params.size()};
+    runs.push_back(e.effect->lane_run(p, data.sample_time, ok));
+  }
+  LaneVector gain{};
+  for (int l = 0; l < kEffectLanes; ++l) gain[l] = X(0, l);
+  const Eigen::Index n = data.size();
+  const bool timed = data.t.size() == n;
+  std::vector<LaneVector> buffer(std::size_t(std::min(n, kLaneChunk))), stage_buffer(buffer.size());
+  for (Eigen::Index begin = 0; begin < n; begin += kLaneChunk) {
+    const auto m = std::size_t(std::min(kLaneChunk, n - begin));
+    const std::span<LaneVector> y(buffer.data(), m), stage_input(stage_buffer.data(), m);
+    for (std::size_t k = 0; k < m; ++k) y[k] = LaneVector{} + data.u[begin + Eigen::Index(k)];
+    run_chunk(entries_, runs, gain, y, stage_input, {begin, timed ? data.t.data() + begin : nullptr, stage_input});
+    check_finite(y, ok);
+    sink(begin, y);
+  }
+  for (const auto& r : runs) r->finish(ok);
 }
 
 nlohmann::json Model::physical_values(const Eigen::Ref<const Eigen::VectorXd>& x,

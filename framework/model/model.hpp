@@ -2,8 +2,10 @@
 // A discovery model: a static gain and an ordered list of effects, with one
 // flat parameter vector "gain", "<effect>.<param>", ... in normalised units.
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -72,11 +74,15 @@ class Model {
 
   // True when every effect has a batched form: simulate_lanes() works.
   bool has_lanes() const;
-  // simulate() for the kEffectLanes candidates in the columns of X at once:
-  // lane l of y holds exactly what simulate() gives for X.col(l), and ok[l]
-  // what it returns.
-  void simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data,
-                      std::vector<LaneVector>& y, LaneMask& ok) const;
+  // Receives the output of simulate_lanes() a chunk at a time: samples
+  // [begin, begin + y.size()).
+  using LaneSink = std::function<void(Eigen::Index begin, std::span<const LaneVector> y)>;
+  // simulate() for the kEffectLanes candidates in the columns of X at once,
+  // every effect run on a chunk of samples before the next chunk so that the
+  // block's signals stay in cache: lane l of the output is exactly what
+  // simulate() gives for X.col(l), and ok[l] ends as what it returns.
+  void simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const ModelData& data, LaneMask& ok,
+                      const LaneSink& sink) const;
   // Physical values {"gain": .., "hysteresis.A": .., ...} and their units
   // {"gain": "µm/V", ...} given the unit names of u and y.
   nlohmann::json physical_values(const Eigen::Ref<const Eigen::VectorXd>& x,

@@ -40,17 +40,16 @@ void ModelProblem::evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Ei
   // A partial block repeats its last candidate in the spare lanes.
   Eigen::MatrixXd block(X.rows(), kEffectLanes);
   for (Eigen::Index l = 0; l < kEffectLanes; ++l) block.col(l) = X.col(first + std::min(l, count - 1));
-  std::vector<LaneVector> y;
-  LaneMask ok;
-  model_.simulate_lanes(block, data_, y, ok);
   // Each lane's SSE is summed exactly as sse() sums it, from a vector of
-  // its own, so the two paths agree bit for bit. One pass over the block
-  // fills all of them: a pass per lane would read every cache line of the
-  // block once per lane.
+  // its own, so the two paths agree bit for bit. Each chunk of the block's
+  // output fills all of them while it is still in cache.
   std::array<Eigen::VectorXd, kEffectLanes> lanes;
   for (Eigen::Index l = 0; l < count; ++l) lanes[l].resize(data_.size());
-  for (Eigen::Index k = 0; k < data_.size(); ++k)
-    for (Eigen::Index l = 0; l < count; ++l) lanes[l][k] = y[k][l];
+  LaneMask ok;
+  model_.simulate_lanes(block, data_, ok, [&](Eigen::Index begin, std::span<const LaneVector> y) {
+    for (std::size_t k = 0; k < y.size(); ++k)
+      for (Eigen::Index l = 0; l < count; ++l) lanes[l][begin + Eigen::Index(k)] = y[k][l];
+  });
   for (Eigen::Index l = 0; l < count; ++l)
     f[first + l] = ok[l] ? sse_of(lanes[l]) : std::numeric_limits<double>::infinity();
 }

@@ -15,9 +15,9 @@
 namespace hystbench {
 namespace {
 
-// The discovery models' lane vectors (GCC vector extensions, as wide as the
-// target's registers): the block's state lives in named registers across the
-// time loop.
+// The discovery models' lane vectors (GCC vector extensions, one register
+// of the target): the block's state lives in named registers across the
+// time loop, two blocks interleaved hide each other's latency.
 constexpr int kLanes = kEffectLanes;
 using Lanes = LaneVector;
 
