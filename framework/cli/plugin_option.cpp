@@ -10,7 +10,7 @@ namespace hystbench::cli {
 Action add_plugin_option(CLI::App& command) {
   auto paths = std::make_shared<std::vector<std::string>>();
   command.add_option("--plugin", *paths,
-                     "shared-library plugin to load (PATH.so, repeatable; see README)")
+                     "shared-library plugin to load (PATH.so, repeatable; see docs/plugins.md)")
       ->allow_extra_args(false);  // one path per --plugin, so the experiment file is not taken
   return [paths] {
     for (const auto& p : *paths) load_plugin(p);

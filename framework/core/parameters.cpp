@@ -179,7 +179,7 @@ Params validate_params(const std::vector<ParamSpec>& specs, const nlohmann::json
   for (const auto& spec : specs) {
     auto it = input.find(spec.name);
     if (spec.required && (it == input.end() || it->is_null()))
-      throw InputError(where + "." + spec.name + ": missing; give " + spec.doc);
+      throw InputError(where + "." + spec.name + ": missing; give " + spec.doc + " (" + kind_of(spec) + ")");
     if (it == input.end() || (it->is_null() && spec.default_value.is_null())) {
       values[spec.name] = spec.default_value;
       continue;

@@ -95,8 +95,8 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
              "at coloured measurement noise rather than at a missing effect.";
     else if (d.completeness.kind == "systematic")
       out << " Something systematic is left that no catalog effect captures, or the fit is "
-             "stuck; consider writing an effect of your own (README, \"Adding a physical "
-             "effect\").";
+             "stuck; consider writing an effect of your own (docs/plugins.md, \"Adding a "
+             "physical effect\").";
     out << "\n\n";
     return out.str();
   }

@@ -127,7 +127,7 @@ std::string completeness_section(const Ladder& ladder) {
   std::string out = std::string("**Complete: ") + (c.complete ? "yes" : "no") + ".** " + c.reason;
   if (!c.complete && ladder.finished() && !ladder.stopped_by_limit)
     out += " No catalog effect improves the fit significantly: what is missing is either not in "
-           "the catalog (README, \"Adding a physical effect\") or hidden by the noise.";
+           "the catalog (docs/plugins.md, \"Adding a physical effect\") or hidden by the noise.";
   return out + "\n\n";
 }
 

@@ -23,7 +23,7 @@ namespace {
 using measurement_csv::trim;
 
 // Quotes a label only when the reader would otherwise split or trim it.
-std::string csv_field(const std::string& s, const std::string& file) {
+std::string segment_cell(const std::string& s, const std::string& file) {
   if (s.find_first_of("\r\n") != std::string::npos)
     throw InputError(file + ": segment label '" + s +
                      "' contains a line break; labels must be one line");
@@ -75,7 +75,7 @@ void write_measurement(const std::filesystem::path& path, const Measurement& m,
     out += csv_number(m.u[i]);
     out += ',';
     out += csv_number(m.y[i]);
-    if (segments) out += ',' + csv_field(m.segment[static_cast<std::size_t>(i)], file);
+    if (segments) out += ',' + segment_cell(m.segment[static_cast<std::size_t>(i)], file);
     out += '\n';
   }
   write_file_atomic(path, out);

@@ -7,14 +7,16 @@
 //
 // Each effect is a plugin registered with one macro:
 //
-//   class Creep : public hystbench::Effect {
+//   class MyEffect : public hystbench::Effect {
 //    public:
 //     static hystbench::EffectInfo info();   // name, stage, parameters, signature statistic
 //     bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
 //                Eigen::Ref<Eigen::VectorXd> signal) const override;
-//     // Optional: stepper() (streaming) and apply_lanes() (batched).
+//     // Optional: stepper() (streaming) and lane_run() (batched); an effect
+//     // deriving from KernelEffect (kernel_effect.hpp) gets all three from
+//     // one per-sample kernel.
 //   };
-//   HYSTBENCH_EFFECT(Creep)
+//   HYSTBENCH_EFFECT(MyEffect)
 //
 // Effects work in normalised units: the framework divides u and y by their
 // RMS before fitting, so bounds are O(1) whatever the physical units, and

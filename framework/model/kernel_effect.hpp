@@ -1,6 +1,6 @@
 #pragma once
 // An effect written once, as a per-sample kernel, and given all three forms
-// the framework asks of an effect: apply() for one candidate, apply_lanes()
+// the framework asks of an effect: apply() for one candidate, lane_run()
 // for a block of candidates in vector lanes, and stepper() for streaming.
 // The three run the same kernel, so they agree bit for bit.
 //
@@ -41,9 +41,8 @@ class KernelEffect : public Effect {
     std::array<double, K> c;
     const EffectSetup s = D::setup(p, ctx.sample_time, c);
     if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    const double* drive = scalar_drive(ctx, signal.size());
-    if (Drive != EffectDrive::None && !drive) return false;
-    return std::isfinite(run(c, D::aux(ctx.sample_time), drive, signal.data(), signal.size()));
+    if (!has_drive(ctx, signal.size())) return false;
+    return std::isfinite(run_record(c, D::aux(ctx.sample_time), scalar_drive(ctx), signal.data(), signal.size()));
   }
 
   bool has_lanes() const override { return true; }
@@ -80,11 +79,21 @@ class KernelEffect : public Effect {
     double samples = 0.0;
   };
 
-  static const double* scalar_drive(const SignalContext& ctx, Eigen::Index n) {
+  // Whether the context holds the drive for n samples.
+  static bool has_drive(const SignalContext& ctx, Eigen::Index n) {
     if constexpr (Drive == EffectDrive::StageInput)
-      return ctx.stage_input && ctx.stage_input->size() == n ? ctx.stage_input->data() : nullptr;
+      return ctx.stage_input && ctx.stage_input->size() == n;
     else if constexpr (Drive == EffectDrive::Time)
-      return ctx.time && ctx.time->size() == n ? ctx.time->data() : nullptr;
+      return ctx.time && ctx.time->size() == n;
+    else
+      return true;
+  }
+
+  static const double* scalar_drive(const SignalContext& ctx) {
+    if constexpr (Drive == EffectDrive::StageInput)
+      return ctx.stage_input->data();
+    else if constexpr (Drive == EffectDrive::Time)
+      return ctx.time->data();
     else
       return nullptr;
   }
@@ -108,12 +117,12 @@ class KernelEffect : public Effect {
       if (!setup_.all) setup_.restore_idle(kept_, signal);
     }
 
+    // As apply(): a running lane fails when it diverged or had no time axis.
     void finish(LaneMask& ok) const override {
-      if (missing_time_) return ok.fill(false);
       if (!setup_.any) return;
       const LaneVector last = D::health(setup_.coefficients, state_);
       for (int l = 0; l < kEffectLanes; ++l)
-        if (setup_.running[l] && !std::isfinite(last[l])) ok[l] = false;
+        if (setup_.running[l] && (missing_time_ || !std::isfinite(last[l]))) ok[l] = false;
     }
 
     bool reads_stage_input() const override { return Drive == EffectDrive::StageInput; }
@@ -137,18 +146,13 @@ class KernelEffect : public Effect {
   // Samples [first, first + n) of one candidate (V = double) or a block
   // (V = LaneVector), s and drive pointing at sample `first`. Returns false
   // when the effect stopped early because every lane diverged.
-  template <class V, class Aux, class State, class In>
-  static bool advance(const std::array<V, K>& coefficients, const Aux& aux, State& carried, const In* drive,
-                      V* s, Eigen::Index first, Eigen::Index n) {
+  template <class V, class Aux, class S, class In>
+  static bool advance(const std::array<V, K>& coefficients, const Aux& aux, S& carried, const In* drive, V* s,
+                      Eigen::Index first, Eigen::Index n) {
     // Local copies: the signal cannot alias them, so the recurrence's state
     // stays in registers instead of being stored and reloaded every sample.
     const std::array<V, K> c = coefficients;
-    State state = carried;
-    struct WriteBack {
-      State& to;
-      const State& from;
-      ~WriteBack() { to = from; }
-    } write_back{carried, state};
+    S state = carried;
     for (Eigen::Index k = 0; k < n; ++k) {
       if constexpr (Drive == EffectDrive::None)
         s[k] = D::sample(c, aux, state, s[k], 0.0);
@@ -158,15 +162,19 @@ class KernelEffect : public Effect {
       // same samples of the record, whatever the chunks) ends a diverging
       // run early without a test on every sample.
       if constexpr (D::kEarlyExit)
-        if (((first + k) & 1023) == 1023 && none_finite(D::health(c, state))) return false;
+        if (((first + k) & 1023) == 1023 && none_finite(D::health(c, state))) {
+          carried = state;
+          return false;
+        }
     }
+    carried = state;
     return true;
   }
 
   // The whole record of one candidate; returns health.
   template <class Aux>
-  static double run(const std::array<double, K>& c, const Aux& aux, const double* drive, double* s,
-                    Eigen::Index n) {
+  static double run_record(const std::array<double, K>& c, const Aux& aux, const double* drive, double* s,
+                           Eigen::Index n) {
     typename D::template State<double> state{};
     advance(c, aux, state, drive, s, 0, n);
     return D::health(c, state);

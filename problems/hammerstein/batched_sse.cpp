@@ -1,9 +1,7 @@
 #include "problems/hammerstein/batched_sse.hpp"
 
-#include <bit>
 #include <cmath>
 #include <algorithm>
-#include <cstdint>
 #include <span>
 #include <limits>
 #include <vector>

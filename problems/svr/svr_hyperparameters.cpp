@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <map>
 
 #include "framework/core/error.hpp"
 #include "framework/core/parameters.hpp"
@@ -62,14 +63,13 @@ SvrHyperparameterProblem::SvrHyperparameterProblem(const Params& p,
   data_name_ = record.name;
   x_ = record.data.u;
   y_ = record.data.y;
-  const nlohmann::json lags = p.is_auto("lags") ? nlohmann::json::object() : p.value("lags");
-  require_known_keys(lags, {"m", "n"}, "problem.lags");
-  lags_ = {int(optional_number(lags, "m", 4, 0, 50, "problem.lags")),
-           int(optional_number(lags, "n", 4, 0, 50, "problem.lags"))};
-  const std::string fitness = p.text("fitness");
-  fitness_ = fitness == "blocked_cv" ? Fitness::BlockedCv
-             : fitness == "libsvm_cv" ? Fitness::LibsvmCv
-                                      : Fitness::FreerunHoldout;
+  const Params lags = validate_params({ParamSpec::integer("m", 4, 0, 50, "input lags"),
+                                       ParamSpec::integer("n", 4, 0, 50, "output lags")},
+                                      p.value("lags"), "problem.lags");
+  lags_ = {lags.integer("m"), lags.integer("n")};
+  const std::map<std::string, Fitness> fitness = {
+      {"blocked_cv", Fitness::BlockedCv}, {"libsvm_cv", Fitness::LibsvmCv}, {"freerun_holdout", Fitness::FreerunHoldout}};
+  fitness_ = fitness.at(p.text("fitness"));  // the choices the spec allows
   folds_ = p.integer("folds");
   holdout_ = p.real("holdout");
   cv_seed_ = unsigned(p.real("cv_seed"));
