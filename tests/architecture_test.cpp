@@ -4,24 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "tests/source_tree.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRoot{HYSTBENCH_SOURCE_DIR};
+const fs::path& kRoot = hystbench::test_support::kSourceRoot;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& path) { return hystbench::test_support::read_file(path); }
 
 // The folders of the "## Layers" code block, top (lowest layer) first;
 // "plugins/<name>/" stands for every optimizer plugin folder.

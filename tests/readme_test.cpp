@@ -16,18 +16,15 @@
 #include <string>
 #include <vector>
 
+#include "tests/source_tree.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRoot{HYSTBENCH_SOURCE_DIR};
+const fs::path& kRoot = hystbench::test_support::kSourceRoot;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& path) { return hystbench::test_support::read_file(path); }
 
 // The section of a page that starts at `heading` ("\n## Title\n"), up to the
 // next section of the same level; empty when the page has no such heading.

@@ -20,18 +20,20 @@ const ProblemInfo& problem_info(const nlohmann::json& spec) {
   return ProblemRegistry::instance().find(spec["type"].get<std::string>(), "problem.type");
 }
 
-}  // namespace
-
-Params problem_options(const nlohmann::json& spec) {
-  const ProblemInfo& info = problem_info(spec);
+Params options_of(const ProblemInfo& info, const nlohmann::json& spec) {
   nlohmann::json options = spec;
   options.erase("type");
   return validate_params(info.params, options, "problem");
 }
 
+}  // namespace
+
+Params problem_options(const nlohmann::json& spec) { return options_of(problem_info(spec), spec); }
+
 std::unique_ptr<Problem> make_problem(const nlohmann::json& spec,
                                       const std::filesystem::path& base_dir) {
-  return problem_info(spec).create(problem_options(spec), base_dir);
+  const ProblemInfo& info = problem_info(spec);
+  return info.create(options_of(info, spec), base_dir);
 }
 
 }  // namespace hystbench
