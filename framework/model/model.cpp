@@ -213,9 +213,10 @@ bool Model::has_lanes() const {
 namespace {
 
 // Samples per chunk of simulate_lanes(): a block's signals of one chunk (the
-// signal, the stage input, an effect's copy of idle lanes) take a few
-// hundred kB, well inside a core's L2.
-constexpr Eigen::Index kLaneChunk = 1024;
+// signal, the stage input, an effect's copy of idle lanes) take 16 kB each
+// with 8 lanes, so that the effects pass them on in L1 (1 024 samples, in
+// L2, measured 8 % slower).
+constexpr Eigen::Index kLaneChunk = 256;
 
 using LaneRuns = std::vector<std::unique_ptr<LaneRun>>;
 
@@ -223,21 +224,39 @@ using LaneRuns = std::vector<std::unique_ptr<LaneRun>>;
 // stage sees what entered it as its stage input (copied only for a stage
 // with an effect that reads it), the gain between input and nonlinearity.
 void run_chunk(const std::vector<Model::ChainEntry>& chain, LaneRuns& runs, const LaneVector& gain,
-               std::span<LaneVector> y, std::span<LaneVector> stage_input, const LaneChunk& chunk) {
-  const auto enter = [&](EffectStage stage) {
-    bool read = false;
+               const double* u, std::span<LaneVector> y, std::span<LaneVector> stage_input,
+               const LaneChunk& chunk) {
+  const auto reads = [&](EffectStage stage) {
     for (std::size_t i = 0; i < chain.size(); ++i)
-      read = read || (chain[i].info->stage == stage && runs[i]->reads_stage_input());
-    if (read) std::copy(y.begin(), y.end(), stage_input.begin());
+      if (chain[i].info->stage == stage && runs[i]->reads_stage_input()) return true;
+    return false;
+  };
+  const auto enter = [&](EffectStage stage) {
+    if (reads(stage)) std::copy(y.begin(), y.end(), stage_input.begin());
   };
   const auto run_stage = [&](EffectStage stage) {
     for (std::size_t i = 0; i < chain.size(); ++i)
       if (chain[i].info->stage == stage) runs[i]->run(y, chunk);
   };
-  enter(EffectStage::Input);
-  run_stage(EffectStage::Input);
-  enter(EffectStage::Nonlinearity);
-  for (auto& v : y) v *= gain;
+  const bool input_effects = std::any_of(chain.begin(), chain.end(), [](const Model::ChainEntry& e) {
+    return e.info->stage == EffectStage::Input;
+  });
+  if (input_effects) {
+    for (std::size_t k = 0; k < y.size(); ++k) y[k] = LaneVector{} + u[k];
+    enter(EffectStage::Input);
+    run_stage(EffectStage::Input);
+    enter(EffectStage::Nonlinearity);
+    for (auto& v : y) v *= gain;
+  } else {
+    // Nothing acts before the gain: the input, the nonlinearity's stage
+    // input and the gained signal are written in one pass.
+    const bool read = reads(EffectStage::Nonlinearity);
+    for (std::size_t k = 0; k < y.size(); ++k) {
+      const LaneVector v = LaneVector{} + u[k];
+      if (read) stage_input[k] = v;
+      y[k] = v * gain;
+    }
+  }
   run_stage(EffectStage::Nonlinearity);
   for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output}) {
     enter(stage);
@@ -272,8 +291,8 @@ void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const Mod
   for (Eigen::Index begin = 0; begin < n; begin += kLaneChunk) {
     const auto m = std::size_t(std::min(kLaneChunk, n - begin));
     const std::span<LaneVector> y(buffer.data(), m), stage_input(stage_buffer.data(), m);
-    for (std::size_t k = 0; k < m; ++k) y[k] = LaneVector{} + data.u[begin + Eigen::Index(k)];
-    run_chunk(entries_, runs, gain, y, stage_input, {begin, timed ? data.t.data() + begin : nullptr, stage_input});
+    run_chunk(entries_, runs, gain, data.u.data() + begin, y, stage_input,
+              {begin, timed ? data.t.data() + begin : nullptr, stage_input});
     check_finite(y, ok);
     sink(begin, y);
   }
