@@ -181,6 +181,15 @@ Eigen::VectorXd Model::carry_over(const Model& from,
 
 bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                      Eigen::VectorXd& y) const {
+  return simulate_probed(x, data, y, Entry::Output, nullptr, nullptr);
+}
+
+bool Model::simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
+                            Eigen::VectorXd& y, Entry entry, const Eigen::VectorXd* added,
+                            ChainSignals* signals) const {
+  const auto add_at = [&](Entry here) {
+    if (added && entry == here) y += *added;
+  };
   // The signal of each stage starts as the previous stage's output, which
   // parallel branches (SignalContext::stage_input) also see.
   Eigen::VectorXd stage_input = data.u;
@@ -195,13 +204,19 @@ bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData
     return true;
   };
   if (!run_stage(EffectStage::Input)) return false;
+  add_at(Entry::Drive);
   stage_input = y;
+  if (signals) signals->v = y;
   y *= x[0];
   if (!run_stage(EffectStage::Nonlinearity)) return false;
-  for (EffectStage stage : {EffectStage::Dynamics, EffectStage::Output}) {
-    stage_input = y;
-    if (!run_stage(stage)) return false;
-  }
+  add_at(Entry::Dynamics);
+  if (signals) signals->w = y;
+  stage_input = y;
+  if (!run_stage(EffectStage::Dynamics)) return false;
+  if (signals) signals->x = y;
+  stage_input = y;
+  if (!run_stage(EffectStage::Output)) return false;
+  add_at(Entry::Output);
   return y.allFinite();
 }
 

@@ -72,6 +72,21 @@ class Model {
   bool simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                 Eigen::VectorXd& y) const;
 
+  // Where a term can be added to the chain (a proposed term,
+  // docs/discovery.md#proposing-a-missing-term): to the drive v (after the
+  // input effects, before the gain: the nonlinearity sees it), to the
+  // dynamics' input w, or to the output.
+  enum class Entry { Drive, Dynamics, Output };
+  // The inner signals of one simulation: the drive v, the dynamics' input w
+  // and the dynamics' output (before the output effects).
+  struct ChainSignals {
+    Eigen::VectorXd v, w, x;
+  };
+  // simulate() with `added` (when not null) added to the signal at `entry`,
+  // and the inner signals written to `signals` (when not null).
+  bool simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data, Eigen::VectorXd& y,
+                       Entry entry, const Eigen::VectorXd* added, ChainSignals* signals) const;
+
   // True when every effect has a batched form: simulate_lanes() works.
   bool has_lanes() const;
   // Receives the output of simulate_lanes() a chunk at a time: samples

@@ -1,0 +1,203 @@
+#include "framework/discovery/proposal.hpp"
+
+#include <cmath>
+
+#include "framework/core/error.hpp"
+#include "framework/io/json_number.hpp"
+
+namespace hystbench {
+namespace {
+
+// Size of the probe added at a stage, for unit-RMS terms in normalised units.
+constexpr double kProbe = 1e-6;
+
+std::string entry_name(Model::Entry entry) {
+  switch (entry) {
+    case Model::Entry::Drive: return "drive v, before the gain";
+    case Model::Entry::Dynamics: return "dynamics input w";
+    case Model::Entry::Output: return "output";
+  }
+  return "?";
+}
+
+std::string term_key(const CandidateTerm& t) { return term_stage_name(t.stage) + ": " + t.text(); }
+
+// The chain's signals the terms are built from, and their rates.
+struct StageSignals {
+  std::vector<Eigen::VectorXd> signal, rate;  // by TermStage
+};
+
+StageSignals stage_signals(const ModelData& data, const Model::ChainSignals& chain, const Eigen::VectorXd& y) {
+  StageSignals s;
+  for (TermStage stage : {TermStage::Input, TermStage::Static, TermStage::Dynamics, TermStage::Output}) {
+    s.signal.push_back(stage_signal(stage, data, chain, y));
+    s.rate.push_back(rate_of(s.signal.back(), data.sample_time));
+  }
+  return s;
+}
+
+Eigen::VectorXd term_values(const CandidateTerm& t, const StageSignals& s) {
+  const auto& a = s.signal[std::size_t(t.stage)];
+  const auto& r = s.rate[std::size_t(t.stage)];
+  Eigen::VectorXd phi(a.size());
+  for (Eigen::Index k = 0; k < a.size(); ++k) phi[k] = t.value(a[k], r[k]);
+  return phi;
+}
+
+double rms_over(const Eigen::VectorXd& v, const Eigen::VectorXd& mask) {
+  const double n = mask.sum();
+  return n > 0 ? std::sqrt((v.array().square() * mask.array()).sum() / n) : 0.0;
+}
+
+// What the term, scaled to unit RMS on the estimation samples, changes in
+// the model output (linearised); `scale` receives that RMS (0: a zero column).
+Eigen::VectorXd output_change(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                              const CandidateTerm& t, const StageSignals& s, const Eigen::VectorXd& y_model,
+                              double& scale) {
+  Eigen::VectorXd phi = term_values(t, s);
+  scale = rms_over(phi, data.estimation);
+  if (!(scale > 0.0) || !std::isfinite(scale)) {
+    scale = 0.0;
+    return Eigen::VectorXd::Zero(phi.size());
+  }
+  phi *= kProbe / scale;
+  Eigen::VectorXd y;
+  if (!model.simulate_probed(x, data, y, t.entry(), &phi, nullptr)) {
+    scale = 0.0;
+    return Eigen::VectorXd::Zero(phi.size());
+  }
+  return (y - y_model) / kProbe;
+}
+
+// How each of the model's own parameters moves the output (forward
+// differences, backward at an upper bound): the directions a refit of the
+// model can already take, which a proposed term must do better than.
+Eigen::MatrixXd parameter_columns(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                                  const Eigen::VectorXd& y_model) {
+  const Bounds b = model.bounds();
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(data.size(), x.size());
+#pragma omp parallel for schedule(dynamic)
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double h = x[i] + kProbe <= b.upper[i] ? kProbe : -kProbe;
+    Eigen::VectorXd xi = x, y;
+    xi[i] += h;
+    if (model.simulate(xi, data, y)) J.col(i) = (y - y_model) / h;
+  }
+  return J;
+}
+
+// Rows of `m` where keep[k] is 1.
+Eigen::MatrixXd rows_where(const Eigen::MatrixXd& m, const Eigen::VectorXd& keep, bool value) {
+  Eigen::MatrixXd out(Eigen::Index(value ? keep.sum() : double(keep.size()) - keep.sum()), m.cols());
+  Eigen::Index r = 0;
+  for (Eigen::Index k = 0; k < m.rows(); ++k)
+    if ((keep[k] != 0.0) == value) out.row(r++) = m.row(k);
+  return out;
+}
+
+double rms(const Eigen::VectorXd& v) { return v.size() ? std::sqrt(v.squaredNorm() / double(v.size())) : 0.0; }
+
+}  // namespace
+
+nlohmann::json ProposeOptions::to_json() const {
+  return {{"degree", degree},
+          {"max_terms", regression.max_terms},
+          {"bic_threshold", regression.bic_threshold},
+          {"heldout_gain", regression.heldout_gain}};
+}
+
+Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                       const ProposeOptions& options) {
+  if (options.degree < 1 || options.degree > 9)
+    throw InputError("propose: --degree must be between 1 and 9 (got " + std::to_string(options.degree) + ")");
+  Eigen::VectorXd y_model;
+  Model::ChainSignals chain;
+  if (!model.simulate_probed(x, data, y_model, Model::Entry::Output, nullptr, &chain))
+    throw InputError("propose: the fitted model " + model.text() +
+                     " diverges on these data; fit it to them first (hystbench fit)");
+  const StageSignals signals = stage_signals(data, chain, y_model);
+  const std::vector<CandidateTerm> library = term_library(options.degree);
+  const Eigen::Index n = data.size(), m = Eigen::Index(library.size());
+  Eigen::MatrixXd columns(n, m);
+  Eigen::VectorXd scale(m);
+#pragma omp parallel for schedule(dynamic)
+  for (Eigen::Index j = 0; j < m; ++j)
+    columns.col(j) = output_change(model, x, data, library[std::size_t(j)], signals, y_model, scale[j]);
+
+  const Eigen::VectorXd e = data.y - y_model;
+  const Eigen::MatrixXd own = parameter_columns(model, x, data, y_model);
+  const auto rows = [&](bool estimation) {
+    return RegressionRows{rows_where(columns, data.estimation, estimation), rows_where(e, data.estimation, estimation),
+                          rows_where(own, data.estimation, estimation)};
+  };
+  const RegressionRows fit = rows(true), check = rows(false);
+  const ForwardRegression r = forward_regression(fit, options.regression, check.e.size() ? &check : nullptr);
+
+  Proposal p;
+  p.model = model.text();
+  p.library_size = int(m);
+  p.options = options;
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(m);
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const ForwardStep& s = r.steps[i];
+    const double c = scale[s.column];
+    theta[s.column] = r.coefficients[Eigen::Index(i)];
+    p.terms.push_back({library[std::size_t(s.column)], r.coefficients[Eigen::Index(i)] / c,
+                       r.standard_errors[Eigen::Index(i)] / c, s.err, s.delta_bic,
+                       s.check_rms * data.scales.y,
+                       s.runner_up >= 0 ? term_key(library[std::size_t(s.runner_up)]) : "", s.runner_up_err});
+  }
+  if (r.refused.column >= 0) {
+    p.refused = term_key(library[std::size_t(r.refused.column)]);
+    p.refused_by = r.refused_by;
+    p.refused_err = r.refused.err;
+    p.refused_delta_bic = r.refused.delta_bic;
+  }
+  // The terms and the refit of the model's own parameters that goes with them.
+  const Eigen::VectorXd e_after = e - columns * theta - own * r.fixed_coefficients;
+  const double sy = data.scales.y;
+  p.n_estimation = long(fit.e.size());
+  p.n_heldout = long(check.e.size());
+  p.rmse_estimation = rms(fit.e) * sy;
+  p.rmse_estimation_after = rms(rows_where(e_after, data.estimation, true)) * sy;
+  p.rmse_heldout = rms(check.e) * sy;
+  p.rmse_heldout_after = rms(rows_where(e_after, data.estimation, false)) * sy;
+  return p;
+}
+
+nlohmann::json Proposal::to_json() const {
+  nlohmann::json terms_json = nlohmann::json::array();
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const ProposedTerm& t = terms[i];
+    terms_json.push_back({{"rank", int(i) + 1},
+                          {"stage", term_stage_name(t.term.stage)},
+                          {"term", t.term.text()},
+                          {"enters", entry_name(t.term.entry())},
+                          {"signal", {{"symbol", t.term.symbol()}, {"power", t.term.signal.power}, {"odd", t.term.signal.odd}}},
+                          {"rate", {{"power", t.term.rate.power}, {"odd", t.term.rate.odd}}},
+                          {"coefficient", number_or_null(t.coefficient)},
+                          {"standard_error", number_or_null(t.standard_error)},
+                          {"share_of_residual", number_or_null(t.err)},
+                          {"delta_bic", number_or_null(t.delta_bic)},
+                          {"heldout_rmse_after", number_or_null(t.heldout_rmse)},
+                          {"runner_up", t.runner_up.empty() ? nlohmann::json(nullptr) : nlohmann::json(t.runner_up)},
+                          {"runner_up_share", number_or_null(t.runner_up_err)}});
+  }
+  nlohmann::json refused_json = nullptr;
+  if (!refused.empty())
+    refused_json = {{"term", refused}, {"refused_by", refused_by}, {"share_of_residual", number_or_null(refused_err)},
+                    {"delta_bic", number_or_null(refused_delta_bic)}};
+  return {{"model", model},
+          {"library_size", library_size},
+          {"options", options.to_json()},
+          {"terms", terms_json},
+          {"first_refused", refused_json},
+          {"units", "coefficients in normalised units (u and y divided by the fit's scales, rates per second)"},
+          {"residual",
+           {{"estimation", {{"samples", n_estimation}, {"rmse_before", rmse_estimation}, {"rmse_after", rmse_estimation_after}}},
+            {"heldout",
+             {{"samples", n_heldout}, {"rmse_before", number_or_null(rmse_heldout)},
+              {"rmse_after", number_or_null(rmse_heldout_after)}}}}}};
+}
+
+}  // namespace hystbench

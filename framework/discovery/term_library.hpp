@@ -1,0 +1,66 @@
+#pragma once
+// The candidate terms of a proposal (docs/discovery.md#proposing-a-missing-term):
+// powers and products of one signal of the fitted chain and of its rate,
+// each entering the chain where that signal lives:
+//
+//   stage      built from                         added to
+//   input      u, the measured input              the drive v, before the gain
+//   static     v, the drive                       the dynamics' input w
+//   dynamics   x, the dynamics' output            the dynamics' input w (a force)
+//   output     ŷ, the model output                the output
+//
+// A term is f(a)·g(a') with a the stage's signal, a' = (a[k] − a[k−1])/Ts its
+// rate (a[−1] = 0: every model starts from rest), and each factor |a|ᵖ or
+// |a|ᵖ·sign(a): both parities of every power, so that a·|a| (an odd
+// square) and |a|³ (an even cube) are candidates beside a² and a³. Every
+// term up to a total degree (default 3) at every stage.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "framework/model/model.hpp"
+
+namespace hystbench {
+
+enum class TermStage { Input, Static, Dynamics, Output };
+
+// "input", "static", "dynamics", "output".
+std::string term_stage_name(TermStage stage);
+
+// |a|^power · sign(a) when odd, |a|^power when not; 1 for power 0.
+struct TermFactor {
+  int power = 0;
+  bool odd = false;
+
+  double value(double a) const;
+  // "v", "|v|", "v²", "v·|v|", "|v|³", ... for the symbol a ("" for power 0).
+  std::string text(const std::string& a) const;
+};
+
+struct CandidateTerm {
+  TermStage stage = TermStage::Static;
+  TermFactor signal, rate;
+
+  // The stage's signal: "u", "v", "x" or "y".
+  std::string symbol() const;
+  // "v·|v'|", "x³", ...
+  std::string text() const;
+  Model::Entry entry() const;
+  // The term at one sample from the stage's signal and its rate.
+  double value(double a, double a_rate) const { return signal.value(a) * rate.value(a_rate); }
+};
+
+// Every term of total degree 1..degree at every stage, in a fixed order
+// (stage: static, dynamics, output, input; then degree, then the power of
+// the signal, then parities).
+std::vector<CandidateTerm> term_library(int degree);
+
+// The signal terms of `stage` are built from, on every sample of one
+// simulation (normalised units): u from the data, v, x from the chain, ŷ.
+const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain,
+                                    const Eigen::VectorXd& y_model);
+
+// (a[k] − a[k−1]) / Ts with a[−1] = 0.
+Eigen::VectorXd rate_of(const Eigen::VectorXd& a, double sample_time);
+
+}  // namespace hystbench

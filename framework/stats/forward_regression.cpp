@@ -1,0 +1,140 @@
+#include "framework/stats/forward_regression.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <cmath>
+#include <limits>
+
+namespace hystbench {
+namespace {
+
+// Below this share of its own norm a column is a combination of the chosen ones.
+constexpr double kCollinear = 1e-10;
+// ERRs this close (relative) are a tie.
+constexpr double kTie = 1e-9;
+
+struct Scores {
+  ForwardStep best, second;
+};
+
+// The best and second-best remaining columns by ERR.
+Scores score(const Eigen::MatrixXd& Q, const Eigen::VectorXd& own_norm2, const std::vector<bool>& taken,
+             const Eigen::VectorXd& e, double ee) {
+  Scores s;
+  for (Eigen::Index j = 0; j < Q.cols(); ++j) {
+    if (taken[std::size_t(j)]) continue;
+    const double qq = Q.col(j).squaredNorm();
+    if (!(qq > kCollinear * own_norm2[j])) continue;
+    const double qe = Q.col(j).dot(e);
+    const double err = qe * qe / (qq * ee);
+    // A column equal to the best one up to rounding (the same term entering
+    // through an identical path) does not displace it: the earlier wins.
+    if (err > s.best.err * (1.0 + kTie)) {
+      s.second = s.best;
+      s.best = {int(j), err};
+    } else if (err > s.second.err) {
+      s.second = {int(j), err};
+    }
+  }
+  return s;
+}
+
+// The chosen columns of P beside the fixed ones.
+Eigen::MatrixXd design(const RegressionRows& rows, const std::vector<int>& chosen) {
+  Eigen::MatrixXd A(rows.P.rows(), Eigen::Index(chosen.size()) + rows.fixed.cols());
+  for (std::size_t i = 0; i < chosen.size(); ++i) A.col(Eigen::Index(i)) = rows.P.col(chosen[i]);
+  A.rightCols(rows.fixed.cols()) = rows.fixed;
+  return A;
+}
+
+// Least squares of e on the chosen and fixed columns.
+Eigen::VectorXd least_squares(const RegressionRows& rows, const std::vector<int>& chosen) {
+  const Eigen::MatrixXd A = design(rows, chosen);
+  if (A.cols() == 0) return {};
+  return Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(A).solve(rows.e);
+}
+
+double rms_residual(const RegressionRows& rows, const std::vector<int>& chosen, const Eigen::VectorXd& theta) {
+  if (rows.e.size() == 0) return 0.0;
+  const Eigen::VectorXd r = theta.size() ? Eigen::VectorXd(rows.e - design(rows, chosen) * theta) : rows.e;
+  return std::sqrt(r.squaredNorm() / double(r.size()));
+}
+
+// Coefficients and standard errors of the final choice.
+void fit_chosen(const RegressionRows& fit, const std::vector<int>& chosen, ForwardRegression& r) {
+  const Eigen::Index k = Eigen::Index(chosen.size());
+  const Eigen::MatrixXd A = design(fit, chosen);
+  const Eigen::VectorXd theta = least_squares(fit, chosen);
+  r.coefficients = theta.head(k);
+  r.fixed_coefficients = theta.tail(fit.fixed.cols());
+  r.standard_errors = Eigen::VectorXd::Zero(k);
+  if (k == 0) return;
+  const double dof = std::max<double>(1.0, double(A.rows() - A.cols()));
+  const double s2 = (fit.e - A * theta).squaredNorm() / dof;
+  r.standard_errors = ((A.transpose() * A).inverse().diagonal() * s2).head(k).cwiseSqrt();
+}
+
+// Removes from every column of Q and from e their part in the span of `fixed`.
+void project_out(const Eigen::MatrixXd& fixed, Eigen::MatrixXd& Q, Eigen::VectorXd& e) {
+  if (fixed.cols() == 0) return;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(fixed);
+  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(fixed.rows(), fixed.cols());
+  Q -= basis * (basis.transpose() * Q);
+  e -= basis * (basis.transpose() * e);
+}
+
+double bic_change(double err, double explained, double n) {
+  const double tiny = std::numeric_limits<double>::min();
+  const double left = std::max(1.0 - explained, tiny);
+  return n * std::log(std::max(1.0 - err / left, tiny)) + std::log(n);
+}
+
+}  // namespace
+
+ForwardRegression forward_regression(const RegressionRows& fit, const ForwardRegressionOptions& options,
+                                     const RegressionRows* check) {
+  ForwardRegression r;
+  Eigen::MatrixXd Q = fit.P;
+  Eigen::VectorXd left = fit.e;
+  project_out(fit.fixed, Q, left);
+  const double ee = left.squaredNorm();
+  r.fixed_share = fit.e.squaredNorm() > 0.0 ? 1.0 - ee / fit.e.squaredNorm() : 0.0;
+  std::vector<int> chosen;
+  if (check) r.check_rms = rms_residual(*check, chosen, least_squares(fit, chosen));
+  double check_rms = r.check_rms;
+  const Eigen::VectorXd own_norm2 = fit.P.colwise().squaredNorm().transpose();
+  std::vector<bool> taken(std::size_t(fit.P.cols()), false);
+  while (ee > 0.0) {
+    const Scores s = score(Q, own_norm2, taken, left, ee);
+    ForwardStep step = s.best;
+    step.runner_up = s.second.column;
+    step.runner_up_err = s.second.err;
+    if (step.column < 0) break;
+    step.delta_bic = bic_change(step.err, r.explained, double(fit.e.size()));
+    std::vector<int> with = chosen;
+    with.push_back(step.column);
+    if (check) step.check_rms = rms_residual(*check, with, least_squares(fit, with));
+    r.refused_by = int(chosen.size()) >= options.max_terms         ? "max_terms"
+                   : step.delta_bic > options.bic_threshold          ? "bic"
+                   : check && step.check_rms > (1.0 - options.heldout_gain) * check_rms ? "heldout"
+                                                                                          : "";
+    if (!r.refused_by.empty()) {
+      r.refused = step;
+      break;
+    }
+    chosen = with;
+    check_rms = step.check_rms;
+    r.steps.push_back(step);
+    r.explained += step.err;
+    taken[std::size_t(step.column)] = true;
+    // Modified Gram–Schmidt: every remaining column loses its part along the chosen one.
+    const Eigen::VectorXd q = Q.col(step.column);
+    const double qq = q.squaredNorm();
+    for (Eigen::Index j = 0; j < Q.cols(); ++j)
+      if (!taken[std::size_t(j)]) Q.col(j) -= (q.dot(Q.col(j)) / qq) * q;
+  }
+  fit_chosen(fit, chosen, r);
+  return r;
+}
+
+}  // namespace hystbench
