@@ -29,6 +29,7 @@ Action add_fit_command(CLI::App& app);
 Action add_compare_command(CLI::App& app);
 Action add_diagnose_command(CLI::App& app);
 Action add_discover_command(CLI::App& app);
+Action add_propose_command(CLI::App& app);
 Action add_report_command(CLI::App& app);
 Action add_rank_command(CLI::App& app);
 Action add_control_command(CLI::App& app);

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   for (auto add : {hystbench::cli::add_list_command, hystbench::cli::add_run_command,
                    hystbench::cli::add_simulate_command, hystbench::cli::add_fit_command,
                    hystbench::cli::add_compare_command, hystbench::cli::add_diagnose_command,
-                   hystbench::cli::add_discover_command,
+                   hystbench::cli::add_discover_command, hystbench::cli::add_propose_command,
                    hystbench::cli::add_report_command, hystbench::cli::add_rank_command,
                    hystbench::cli::add_control_command, hystbench::cli::add_svr_command,
                    hystbench::cli::add_track_command}) {

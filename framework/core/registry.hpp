@@ -64,6 +64,7 @@ class Registry {
     for (const auto& [key, entry] : entries_) known.push_back(key);
     throw InputError(what + ": unknown name '" + name + "'; known: " + join(known));
   }
+  bool contains(const std::string& name) const { return entries_.count(name) > 0; }
   std::vector<const Info*> all() const {
     std::vector<const Info*> out;
     for (const auto& [name, info] : entries_) out.push_back(&info);

@@ -241,8 +241,25 @@ void refit_leaders(Diagnosis& d, const ModelData& data, const DiagnoseOptions& o
 
 }  // namespace
 
+namespace {
+
+// The partial-help rule (beyond_catalog.hpp): above the noise floor, a
+// winner that removes less than kPartialShare of the excess is not added.
+bool refuse_partial(Diagnosis& d) {
+  if (d.completeness.kind != "systematic") return false;
+  const double share = candidate_share(d, d.verdict);
+  if (!(share < kPartialShare)) return false;
+  d.beyond.refused = d.verdict;
+  d.beyond.refused_share = share;
+  d.verdict = "none";
+  return true;
+}
+
+}  // namespace
+
 void decide(Diagnosis& d, const DiagnoseOptions& o) {
   d.close_call = {};
+  d.beyond = {};
   std::vector<const Candidate*> significant;
   for (const auto& c : d.candidates)
     if (c.significant) significant.push_back(&c);
@@ -258,6 +275,7 @@ void decide(Diagnosis& d, const DiagnoseOptions& o) {
       d.errors.n_heldout > 0 && by_heldout != by_bic &&
       by_heldout->after.rmse_heldout <= (1.0 - o.heldout_gain) * by_bic->after.rmse_heldout;
   d.verdict = heldout_decides ? by_heldout->effect : by_bic->effect;
+  if (refuse_partial(d)) return;
   if (d.errors.n_heldout > 0 && by_heldout != by_bic) {
     d.close_call = {true,
                     "BIC prefers " + by_bic->effect + " (ΔBIC " + format_number("%.1f", by_bic->delta_bic) +
@@ -288,6 +306,7 @@ Diagnosis diagnose(const Model& model, const Eigen::VectorXd& x, const ModelData
   d.candidates = try_candidates(d, data, o);
   refit_leaders(d, data, o);
   decide(d, o);
+  describe_beyond_catalog(d, data);
   return d;
 }
 
@@ -318,6 +337,7 @@ nlohmann::json Diagnosis::to_json() const {
           {"bic", bic},
           {"candidates", list},
           {"where", hystbench::to_json(where)},
+          {"beyond_catalog", beyond.to_json()},
           {"options", options}};
 }
 

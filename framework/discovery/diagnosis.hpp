@@ -23,7 +23,10 @@
 // diagnosis is marked a close call and both candidates, with their fitted
 // parameters, are shown.
 // "none" when no candidate is significant — which is what a model with a
-// white residual at the noise floor must get.
+// white residual at the noise floor must get — or when the winner helps only
+// in part: while the fit is above the noise floor, the winner must remove a
+// quarter of what is left above it on the held-out data (beyond_catalog.hpp;
+// the diagnosis then says what it refused and why).
 //
 // Before any candidate is tried, the current fit is checked for being off
 // its optimum (fit_at_optimum.hpp), and the diagnosis reports whether the
@@ -34,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/discovery/beyond_catalog.hpp"
 #include "framework/discovery/comparison.hpp"
 #include "framework/discovery/completeness.hpp"
 #include "framework/discovery/fit_at_optimum.hpp"
@@ -89,12 +93,14 @@ struct Diagnosis {
   Completeness completeness = {};          // of the current fit
   ModelCheck check = {};                   // of the current fit
   Comparison where = {};                   // compare_signals of the current fit
+  BeyondCatalog beyond = {};               // when something systematic is left that no effect captures
   nlohmann::json options = {};
 
   const Candidate* winner() const;
   const Candidate* find(const std::string& effect) const;
   // {"verdict", "complete", "completeness", "close_call", "optimum", "model",
-  //  "parameters", "candidates": [...], "where", "errors", "bic", "options"}
+  //  "parameters", "candidates": [...], "where", "errors", "bic", "options",
+  //  "beyond_catalog"}
   nlohmann::json to_json() const;
 };
 

@@ -84,15 +84,22 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
         << join(d.optimum.actions, "; ") << ".\n\n";
   const Candidate* w = d.winner();
   if (!w) {
-    out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
-        << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "
-        << num(100.0 * d.options.value("heldout_gain", 0.01)) << " % lower).";
+    if (!d.beyond.refused.empty())
+      out << "**none**: " << d.beyond.refused << " is significant but removes only "
+          << num(100.0 * d.beyond.refused_share) << " % of the error left above the noise on the held-out "
+          << "data; an effect must remove " << num(100.0 * kPartialShare) << " % to be added.";
+    else
+      out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
+          << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "
+          << num(100.0 * d.options.value("heldout_gain", 0.01)) << " % lower).";
     // The same judgement as the completeness line above, in terms of what to do.
     if (d.completeness.complete)
       out << " The model has nothing systematic left to find.";
     else if (d.completeness.kind == "coloured_at_floor")
       out << " The error is at the noise estimate but the residual is not white, which points "
              "at coloured measurement noise rather than at a missing effect.";
+    else if (d.completeness.kind == "beyond_catalog")
+      out << " See \"Beyond the catalog\" below.";
     else if (d.completeness.kind == "systematic")
       out << " Something systematic is left that no catalog effect captures, or the fit is "
              "stuck; consider writing an effect of your own (docs/plugins.md, \"Adding a "
@@ -160,7 +167,7 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& data_name,
   const std::string unit = unit_suffix(y_unit);
   return "# Diagnosis of `" + d.model.text() + "` on " + data_name + "\n\n" +
          verdict_section(d, unit) + where_section(d, unit, current_report) +
-         candidates_section(d, unit);
+         beyond_catalog_markdown(d.beyond, data_name) + candidates_section(d, unit);
 }
 
 std::vector<std::filesystem::path> write_diagnosis(const std::filesystem::path& dir,

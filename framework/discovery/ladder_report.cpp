@@ -125,7 +125,7 @@ namespace {
 std::string completeness_section(const Ladder& ladder) {
   const Completeness& c = ladder.completeness();
   std::string out = std::string("**Complete: ") + (c.complete ? "yes" : "no") + ".** " + c.reason;
-  if (!c.complete && ladder.finished() && !ladder.stopped_by_limit)
+  if (!c.complete && c.kind != "beyond_catalog" && ladder.finished() && !ladder.stopped_by_limit)
     out += " No catalog effect improves the fit significantly: what is missing is either not in "
            "the catalog (docs/plugins.md, \"Adding a physical effect\") or hidden by the noise.";
   return out + "\n\n";
@@ -178,6 +178,7 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
   if (ctx.true_noise_sd) out << "; true noise σ " << num(*ctx.true_noise_sd) << unit;
   out << ". Held out: " << describe_holdout(ctx.data, ctx.holdout) << "\n\n";
   out << "![ladder](ladder.png)\n\n## Why each effect was added\n\n";
+  if (ladder.steps.size() == 1) out << "None was added.\n";
   for (std::size_t k = 1; k < ladder.steps.size(); ++k) {
     const Diagnosis& d = ladder.diagnoses[k - 1];
     out << k << ". **" << ladder.steps[k].added << "**: " << ladder.steps[k].evidence
@@ -190,6 +191,8 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
     if (ladder.diagnoses[k].optimum.triggered)
       out << "\nStep " << k << ": the fit looked off its optimum (" << ladder.diagnoses[k].optimum.reason
           << "); " << join(ladder.diagnoses[k].optimum.actions, "; ") << ".\n";
+  const std::string beyond = beyond_catalog_markdown(ladder.diagnoses.back().beyond, ctx.source.file_name());
+  if (!beyond.empty()) out << "\n" << beyond;
   out << "\n" << parameters_section(ladder.diagnoses.back().check);
   out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
       << ladder.steps.size() - 1 << "/report.md). Final fit: `fit.json` (use it with "

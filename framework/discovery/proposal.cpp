@@ -1,5 +1,6 @@
 #include "framework/discovery/proposal.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/core/error.hpp"
@@ -147,6 +148,13 @@ Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const Model
                        s.check_rms * data.scales.y,
                        s.runner_up >= 0 ? term_key(library[std::size_t(s.runner_up)]) : "", s.runner_up_err});
   }
+  for (Eigen::Index j = 0; j < m; ++j) {
+    const CandidateTerm& t = library[std::size_t(j)];
+    auto lead = std::find_if(p.stage_leads.begin(), p.stage_leads.end(),
+                             [&](const StageLead& l) { return l.stage == t.stage; });
+    if (lead == p.stage_leads.end()) lead = p.stage_leads.insert(p.stage_leads.end(), {t.stage, "", 0.0});
+    if (r.first_err[j] > lead->share) *lead = {t.stage, t.text(), r.first_err[j]};
+  }
   if (r.refused.column >= 0) {
     p.refused = term_key(library[std::size_t(r.refused.column)]);
     p.refused_by = r.refused_by;
@@ -187,7 +195,13 @@ nlohmann::json Proposal::to_json() const {
   if (!refused.empty())
     refused_json = {{"term", refused}, {"refused_by", refused_by}, {"share_of_residual", number_or_null(refused_err)},
                     {"delta_bic", number_or_null(refused_delta_bic)}};
+  nlohmann::json leads = nlohmann::json::array();
+  for (const StageLead& l : stage_leads)
+    leads.push_back({{"stage", term_stage_name(l.stage)},
+                     {"term", l.term.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.term)},
+                     {"share_of_residual", number_or_null(l.share)}});
   return {{"model", model},
+          {"stage_leads", leads},
           {"library_size", library_size},
           {"options", options.to_json()},
           {"terms", terms_json},

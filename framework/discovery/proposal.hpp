@@ -55,11 +55,19 @@ struct ProposedTerm {
   double runner_up_err = 0.0;
 };
 
+// The term of one stage that alone explains most of the residual.
+struct StageLead {
+  TermStage stage = TermStage::Static;
+  std::string term;   // "" when no term of the stage explains anything
+  double share = 0.0;
+};
+
 struct Proposal {
   std::string model;             // the fitted model's effects
   int library_size = 0;
   ProposeOptions options;
   std::vector<ProposedTerm> terms;  // in the order chosen
+  std::vector<StageLead> stage_leads;  // one per stage, in library order
   // The first term the stopping rule refused, for the report ("" when
   // none), and the rule ("bic", "heldout", "max_terms").
   std::string refused, refused_by;

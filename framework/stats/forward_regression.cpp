@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -10,6 +11,8 @@ namespace {
 
 // Below this share of its own norm a column is a combination of the chosen ones.
 constexpr double kCollinear = 1e-10;
+// A share of the target's sum of squares below which nothing is left.
+constexpr double kNothingLeft = 1e-12;
 // ERRs this close (relative) are a tie.
 constexpr double kTie = 1e-9;
 
@@ -89,10 +92,33 @@ double bic_change(double err, double explained, double n) {
   return n * std::log(std::max(1.0 - err / left, tiny)) + std::log(n);
 }
 
+// The fixed columns without those that are combinations of others (a
+// parameter at a value where it does nothing has a zero sensitivity), so
+// that the final fit's covariance exists; `kept` lists them.
+Eigen::MatrixXd independent_columns(const Eigen::MatrixXd& fixed, std::vector<Eigen::Index>& kept) {
+  kept.clear();
+  if (fixed.cols() == 0) return fixed;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(fixed);
+  qr.setThreshold(1e-10);
+  for (Eigen::Index i = 0; i < qr.rank(); ++i) kept.push_back(qr.colsPermutation().indices()[i]);
+  std::sort(kept.begin(), kept.end());
+  Eigen::MatrixXd out(fixed.rows(), Eigen::Index(kept.size()));
+  for (std::size_t i = 0; i < kept.size(); ++i) out.col(Eigen::Index(i)) = fixed.col(kept[i]);
+  return out;
+}
+
 }  // namespace
 
-ForwardRegression forward_regression(const RegressionRows& fit, const ForwardRegressionOptions& options,
-                                     const RegressionRows* check) {
+ForwardRegression forward_regression(const RegressionRows& given_fit, const ForwardRegressionOptions& options,
+                                     const RegressionRows* given_check) {
+  std::vector<Eigen::Index> kept;
+  const RegressionRows fit{given_fit.P, given_fit.e, independent_columns(given_fit.fixed, kept)};
+  RegressionRows check_rows;
+  if (given_check) {
+    check_rows = {given_check->P, given_check->e, Eigen::MatrixXd(given_check->fixed.rows(), Eigen::Index(kept.size()))};
+    for (std::size_t i = 0; i < kept.size(); ++i) check_rows.fixed.col(Eigen::Index(i)) = given_check->fixed.col(kept[i]);
+  }
+  const RegressionRows* check = given_check ? &check_rows : nullptr;
   ForwardRegression r;
   Eigen::MatrixXd Q = fit.P;
   Eigen::VectorXd left = fit.e;
@@ -104,12 +130,18 @@ ForwardRegression forward_regression(const RegressionRows& fit, const ForwardReg
   double check_rms = r.check_rms;
   const Eigen::VectorXd own_norm2 = fit.P.colwise().squaredNorm().transpose();
   std::vector<bool> taken(std::size_t(fit.P.cols()), false);
+  r.first_err = Eigen::VectorXd::Zero(fit.P.cols());
+  for (Eigen::Index j = 0; j < Q.cols() && ee > 0.0; ++j) {
+    const double qq = Q.col(j).squaredNorm(), qe = Q.col(j).dot(left);
+    if (qq > kCollinear * own_norm2[j]) r.first_err[j] = qe * qe / (qq * ee);
+  }
   while (ee > 0.0) {
     const Scores s = score(Q, own_norm2, taken, left, ee);
     ForwardStep step = s.best;
     step.runner_up = s.second.column;
     step.runner_up_err = s.second.err;
-    if (step.column < 0) break;
+    // Nothing left to explain (the target is in the span of what was taken).
+    if (step.column < 0 || 1.0 - r.explained < kNothingLeft) break;
     step.delta_bic = bic_change(step.err, r.explained, double(fit.e.size()));
     std::vector<int> with = chosen;
     with.push_back(step.column);
@@ -134,6 +166,9 @@ ForwardRegression forward_regression(const RegressionRows& fit, const ForwardReg
       if (!taken[std::size_t(j)]) Q.col(j) -= (q.dot(Q.col(j)) / qq) * q;
   }
   fit_chosen(fit, chosen, r);
+  Eigen::VectorXd all = Eigen::VectorXd::Zero(given_fit.fixed.cols());
+  for (std::size_t i = 0; i < kept.size(); ++i) all[kept[i]] = r.fixed_coefficients[Eigen::Index(i)];
+  r.fixed_coefficients = all;
   return r;
 }
 

@@ -64,9 +64,12 @@ struct ForwardStep {
 
 struct ForwardRegression {
   std::vector<ForwardStep> steps;       // in the order chosen
+  Eigen::VectorXd first_err;            // every column's ERR at the first step (0: skipped)
   Eigen::VectorXd coefficients;         // of the chosen columns, in step order
   Eigen::VectorXd standard_errors;
-  Eigen::VectorXd fixed_coefficients;   // of the fixed columns, in the same fit
+  // Of the fixed columns, in the same fit; 0 for a column that is a
+  // combination of the others (left out of the fit).
+  Eigen::VectorXd fixed_coefficients;
   double explained = 0.0;               // Σ ERR
   double fixed_share = 0.0;             // share of eᵀe the fixed columns took
   double check_rms = 0.0;               // of the check rows after the fixed columns alone

@@ -1,0 +1,135 @@
+#include "framework/discovery/beyond_catalog.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "framework/core/text.hpp"
+#include "framework/discovery/diagnosis.hpp"
+#include "framework/io/json_number.hpp"
+
+namespace hystbench {
+namespace {
+
+std::string g4(double v) { return format_number("%.4g", v); }
+std::string pct(double share) { return format_number("%.3g", 100.0 * share) + " %"; }
+
+std::string amplitude_sentence(const Comparison& c) {
+  const AmplitudeErrors* worst = nullptr;
+  for (const auto& b : c.by_amplitude)
+    if (b.metrics.n > 0 && (!worst || b.metrics.rmse > worst->metrics.rmse)) worst = &b;
+  if (!worst) return "";
+  return "by amplitude: largest at |u − mean| in [" + g4(worst->u_low) + ", " + g4(worst->u_high) + "] (RMSE " +
+         g4(worst->metrics.rmse) + " against " + g4(c.parts.all.rmse) + " overall)";
+}
+
+std::string direction_sentence(const Comparison& c) {
+  const double up = c.by_branch.loading.rmse, down = c.by_branch.unloading.rmse;
+  if (!(up > 0.0) || !(down > 0.0)) return "";
+  const std::string which = up > 1.2 * down   ? "larger while the drive rises"
+                            : down > 1.2 * up ? "larger while the drive falls"
+                                              : "alike in both directions";
+  return "by direction: " + which + " (RMSE " + g4(up) + " loading, " + g4(down) + " unloading)";
+}
+
+std::string segment_sentence(const Comparison& c) {
+  const SegmentErrors* worst = nullptr;
+  for (const auto& s : c.by_segment)
+    if (s.metrics.n > 0 && (!worst || s.metrics.rmse > worst->metrics.rmse)) worst = &s;
+  if (!worst || c.by_segment.size() < 2) return "";
+  return "by segment: largest in " + worst->segment + " (RMSE " + g4(worst->metrics.rmse) + ")";
+}
+
+std::string stage_sentence(const std::vector<StageLead>& leads) {
+  std::vector<StageLead> sorted = leads;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const StageLead& a, const StageLead& b) { return a.share > b.share; });
+  std::string out = "by stage, the best single term explains";
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    out += std::string(i ? ";" : "") + " " + term_stage_name(sorted[i].stage) + " " +
+           (sorted[i].term.empty() ? "nothing" : sorted[i].term + " " + pct(sorted[i].share));
+  return out;
+}
+
+}  // namespace
+
+double excess_share(double before, double after, double sigma) {
+  const double excess = before * before - sigma * sigma;
+  if (!(excess > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return (before * before - after * after) / excess;
+}
+
+double candidate_share(const Diagnosis& d, const std::string& effect) {
+  const Candidate* c = d.find(effect);
+  if (!c) return std::numeric_limits<double>::quiet_NaN();
+  const bool held = d.errors.n_heldout > 0;
+  return excess_share(held ? d.errors.rmse_heldout : d.errors.rmse_estimation,
+                      held ? c->after.rmse_heldout : c->after.rmse_estimation, d.completeness.sigma);
+}
+
+void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
+  if (d.verdict != "none" || d.completeness.complete || d.completeness.kind != "systematic") return;
+  BeyondCatalog& b = d.beyond;
+  b.applies = true;
+  for (const Candidate& c : d.candidates) b.tried.push_back({c.effect, candidate_share(d, c.effect)});
+  for (const std::string& s : {amplitude_sentence(d.where), direction_sentence(d.where), segment_sentence(d.where)})
+    if (!s.empty()) b.where.push_back(s);
+  ProposeOptions probe;
+  probe.regression.max_terms = 1;
+  b.stages = propose_terms(d.model, d.x, data, probe).stage_leads;
+  b.where.push_back(stage_sentence(b.stages));
+  b.advice = "run hystbench propose on this fit to look for the missing term";
+  std::string best;
+  double best_share = -std::numeric_limits<double>::infinity();
+  for (const auto& [effect, share] : b.tried)
+    if (share > best_share) best = effect, best_share = share;
+  const std::string prefix = "Something systematic is left: ";
+  std::string numbers = d.completeness.reason;
+  if (numbers.rfind(prefix, 0) == 0) numbers = numbers.substr(prefix.size());
+  d.completeness.kind = "beyond_catalog";
+  d.completeness.reason =
+      "Something systematic is left and no catalog effect captures it: " + numbers +
+      (best.empty() ? std::string(" No catalog effect was tried.")
+                    : " The most any catalog effect removed of what is left above the noise on the held-out data is " +
+                          pct(std::max(best_share, 0.0)) + " (" + best + ")" +
+                          (b.refused.empty() ? "" : "; " + b.refused + " was significant but removed too little to add") +
+                          ".") +
+      " The missing physics may not be in the catalog: " + b.advice + ".";
+}
+
+std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name) {
+  if (!b.applies) return "";
+  std::string out = "## Beyond the catalog\n\nSomething systematic is left and no catalog effect captures it.\n\n"
+                    "Where the error concentrates:\n\n";
+  for (const std::string& w : b.where) out += "- " + w + "\n";
+  out += "\nWhat each catalog effect removed of the error left above the noise (held out; an effect must "
+         "remove " + pct(kPartialShare) + " to be added):";
+  for (std::size_t i = 0; i < b.tried.size(); ++i)
+    out += std::string(i ? "," : "") + " " + b.tried[i].first + " " +
+           (std::isfinite(b.tried[i].second) ? pct(b.tried[i].second) : "–");
+  out += ".\n\nThe missing physics may not be in the catalog. `hystbench propose` regresses the residual on "
+         "terms built from the model's own signals at each stage and writes the best as an effect plugin "
+         "(docs/discovery.md, \"Proposing a missing term\"):\n\n"
+         "```sh\nhystbench propose --data DATA --fit DIR/fit.json --out DIR/proposals\n```\n\n"
+         "with DATA the measurement (" + data_name + ") and DIR this folder.\n\n";
+  return out;
+}
+
+nlohmann::json BeyondCatalog::to_json() const {
+  nlohmann::json tried_json = nlohmann::json::array();
+  for (const auto& [effect, share] : tried) tried_json.push_back({{"effect", effect}, {"excess_share", number_or_null(share)}});
+  nlohmann::json stages_json = nlohmann::json::array();
+  for (const StageLead& l : stages)
+    stages_json.push_back({{"stage", term_stage_name(l.stage)},
+                           {"term", l.term.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.term)},
+                           {"share_of_residual", number_or_null(l.share)}});
+  return {{"applies", applies},
+          {"refused", refused.empty() ? nlohmann::json(nullptr) : nlohmann::json(refused)},
+          {"refused_share", number_or_null(refused_share)},
+          {"partial_share_rule", kPartialShare},
+          {"tried", tried_json},
+          {"where", where},
+          {"stages", stages_json},
+          {"advice", advice}};
+}
+
+}  // namespace hystbench

@@ -1,0 +1,61 @@
+#pragma once
+// Beyond the catalog (docs/discovery.md#beyond-the-catalog): something
+// systematic is left in a fit and no catalog effect captures it. Then a
+// diagnosis says so plainly instead of adding the nearest effect: its
+// completeness kind becomes "beyond_catalog", and it says where the error
+// concentrates, what each catalog effect did on the held-out data, at which
+// stage the best single term of the proposal library would enter, and to
+// run `hystbench propose`.
+//
+// Partial help is not enough: a significant candidate is added only when it
+// removes at least a quarter of what the current model leaves above the
+// noise on the held-out data (on the estimation data when nothing is held
+// out),
+//
+//   share = (RMSE_before² − RMSE_after²) / (RMSE_before² − σ²)  ≥  0.25,
+//
+// σ the noise estimate. The rule applies only while the fit is above the
+// noise floor (completeness kind "systematic"). Every catalog effect that
+// found a hidden effect of the benchmark removed more than 70 % of it.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "framework/discovery/proposal.hpp"
+
+namespace hystbench {
+
+struct Diagnosis;
+
+constexpr double kPartialShare = 0.25;
+
+// The share above, NaN when the model is at or below the noise (no excess).
+double excess_share(double rmse_before, double rmse_after, double sigma);
+
+struct BeyondCatalog {
+  bool applies = false;
+  // The significant candidate the partial-help rule refused ("" when none).
+  std::string refused;
+  double refused_share = 0.0;
+  // Every candidate tried, with the share of the excess it removed (held out).
+  std::vector<std::pair<std::string, double>> tried;
+  std::vector<std::string> where;  // sentences: where the error concentrates
+  std::vector<StageLead> stages;   // the best single term of each stage
+  std::string advice;
+
+  nlohmann::json to_json() const;
+};
+
+// The held-out excess share of a candidate of `d` (estimation when nothing
+// is held out).
+double candidate_share(const Diagnosis& d, const std::string& effect);
+
+// The "Beyond the catalog" section of report.md and ladder.md ("" when it
+// does not apply); `data_name` names the measurement in the propose command.
+std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name);
+
+// Fills d.beyond and turns d.completeness into "beyond_catalog" when the
+// verdict is "none" and something systematic is left; otherwise nothing.
+void describe_beyond_catalog(Diagnosis& d, const ModelData& data);
+
+}  // namespace hystbench
