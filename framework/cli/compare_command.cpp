@@ -24,28 +24,15 @@ struct CompareOptions {
   int periods = 1;
 };
 
-bool same_file(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  return std::filesystem::equivalent(a, b, ec);
-}
-
-// The data as the fit saw them: its columns and units unless given, its
-// scales, and its hold-out when these are the data it was fitted on.
+// The data as the fit saw them (data_for_fit); nothing held out on other
+// data or over several periods.
 ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& source,
                    const CLI::App& cmd) {
-  if (o.data.columns.empty()) source.columns = fit.data.columns;
-  if (source.u_unit.empty()) source.u_unit = fit.data.u_unit;
-  if (source.y_unit.empty()) source.y_unit = fit.data.y_unit;
-  const Measurement m = source.load();
-  HoldoutSpec holdout;
-  if (cmd.count("--holdout"))
-    holdout = o.data.holdout_spec();
-  else if (same_file(source.path, fit.data.path))
-    holdout = fit.holdout;
-  else
-    holdout.mode = HoldoutSpec::Mode::None;
-  if (o.periods > 1) holdout.mode = HoldoutSpec::Mode::None;
-  return prepare_model_data(m, fit.scales, holdout);
+  if (o.periods <= 1)
+    return data_for_fit(o.data, fit, source, cmd.count("--holdout") > 0, HoldoutSpec::Mode::None);
+  DataOptions whole = o.data;
+  whole.holdout = "none";
+  return data_for_fit(whole, fit, source, true, HoldoutSpec::Mode::None);
 }
 
 void report(const CompareOptions& o, const DataSource& source, const ModelData& data, Eigen::VectorXd y,

@@ -1,5 +1,7 @@
 #include "framework/cli/model_options.hpp"
 
+#include <filesystem>
+
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
@@ -13,6 +15,31 @@ DataSource DataOptions::source() const {
   s.u_unit = input_unit;
   s.y_unit = output_unit;
   return s;
+}
+
+namespace {
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec);
+}
+
+}  // namespace
+
+ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
+                       HoldoutSpec::Mode elsewhere) {
+  if (o.columns.empty()) source.columns = fit.data.columns;
+  if (source.u_unit.empty()) source.u_unit = fit.data.u_unit;
+  if (source.y_unit.empty()) source.y_unit = fit.data.y_unit;
+  const Measurement m = source.load();
+  HoldoutSpec holdout;
+  if (holdout_given)
+    holdout = o.holdout_spec();
+  else if (same_file(source.path, fit.data.path))
+    holdout = fit.holdout;
+  else
+    holdout.mode = elsewhere;
+  return prepare_model_data(m, fit.scales, holdout);
 }
 
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {

@@ -7,6 +7,7 @@
 
 #include "framework/discovery/data_source.hpp"
 #include "framework/discovery/diagnosis.hpp"
+#include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_fit.hpp"
 
 namespace hystbench::cli {
@@ -19,6 +20,12 @@ struct DataOptions {
 // --data (required), --columns, --input-unit, --output-unit; --holdout when
 // `with_holdout`.
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
+
+// The measurement a fit record is used on: its columns and units unless
+// given, its fit's scales, and the hold-out: --holdout when given, else the
+// fit's own on the data it was fitted to, else `elsewhere`.
+ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
+                       HoldoutSpec::Mode elsewhere);
 
 struct FitCliOptions {
   FitOptions fit;  // the library's defaults are the command line's

@@ -72,7 +72,7 @@ GeneratedEffect write_effect(const Proposal& p, const ProposeCommandOptions& o, 
   }
 }
 
-void run_propose(const ProposeCommandOptions& o) {
+void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   check_options(o);
   const nlohmann::json file = read_json_file(o.from_fit, "fit file");
   if (SvrHammerstein::is_model_file(file))
@@ -80,8 +80,9 @@ void run_propose(const ProposeCommandOptions& o) {
                      "catalog model's fit.json (hystbench fit, diagnose or discover)");
   const FitRecord fit = FitRecord::read(o.from_fit);
   DataSource source = o.data.source();
-  const Measurement m = source.load();
-  const ModelData data = prepare_fit_data(m, fit.scales, o.data.holdout_spec(), fit.model);
+  // The fit's own hold-out on its own data, so that the held-out check
+  // judges on samples the fit never saw.
+  const ModelData data = data_for_fit(o.data, fit, source, holdout_given, HoldoutSpec::Mode::Auto);
   const auto dir = o.output.prepare("proposals.json");
 
   const Proposal p = propose_terms(fit.model, fit.x, data, o.propose);
@@ -118,9 +119,9 @@ Action add_propose_command(CLI::App& app) {
   cmd->add_option("--name", o->name, "name of the generated effect")->capture_default_str();
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);
-  return [o, load_plugins] {
+  return [o, cmd, load_plugins] {
     load_plugins();
-    run_propose(*o);
+    run_propose(*o, cmd->count("--holdout") > 0);
   };
 }
 

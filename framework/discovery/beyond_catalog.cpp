@@ -70,6 +70,7 @@ void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
   if (d.verdict != "none" || d.completeness.complete || d.completeness.kind != "systematic") return;
   BeyondCatalog& b = d.beyond;
   b.applies = true;
+  b.judged_on = d.errors.n_heldout > 0 ? "held-out" : "estimation";
   for (const Candidate& c : d.candidates) b.tried.push_back({c.effect, candidate_share(d, c.effect)});
   for (const std::string& s : {amplitude_sentence(d.where), direction_sentence(d.where), segment_sentence(d.where)})
     if (!s.empty()) b.where.push_back(s);
@@ -89,7 +90,8 @@ void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
   d.completeness.reason =
       "Something systematic is left and no catalog effect captures it: " + numbers +
       (best.empty() ? std::string(" No catalog effect was tried.")
-                    : " The most any catalog effect removed of what is left above the noise on the held-out data is " +
+                    : " The most any catalog effect removed of what is left above the noise on the " + b.judged_on +
+                          " data is " +
                           pct(std::max(best_share, 0.0)) + " (" + best + ")" +
                           (b.refused.empty() ? "" : "; " + b.refused + " was significant but removed too little to add") +
                           ".") +
@@ -101,8 +103,8 @@ std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& d
   std::string out = "## Beyond the catalog\n\nSomething systematic is left and no catalog effect captures it.\n\n"
                     "Where the error concentrates:\n\n";
   for (const std::string& w : b.where) out += "- " + w + "\n";
-  out += "\nWhat each catalog effect removed of the error left above the noise (held out; an effect must "
-         "remove " + pct(kPartialShare) + " to be added):";
+  out += "\nWhat each catalog effect removed of the error left above the noise (" + b.judged_on +
+         " data; an effect must remove " + pct(kPartialShare) + " to be added):";
   for (std::size_t i = 0; i < b.tried.size(); ++i)
     out += std::string(i ? "," : "") + " " + b.tried[i].first + " " +
            (std::isfinite(b.tried[i].second) ? pct(b.tried[i].second) : "–");
@@ -117,19 +119,15 @@ std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& d
 nlohmann::json BeyondCatalog::to_json() const {
   nlohmann::json tried_json = nlohmann::json::array();
   for (const auto& [effect, share] : tried) tried_json.push_back({{"effect", effect}, {"excess_share", number_or_null(share)}});
-  nlohmann::json stages_json = nlohmann::json::array();
-  for (const StageLead& l : stages)
-    stages_json.push_back({{"stage", term_stage_name(l.stage)},
-                           {"term", l.term.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.term)},
-                           {"share_of_residual", number_or_null(l.share)}});
   return {{"applies", applies},
           {"refused", refused.empty() ? nlohmann::json(nullptr) : nlohmann::json(refused)},
           {"refused_share", number_or_null(refused_share)},
           {"partial_share_rule", kPartialShare},
           {"tried", tried_json},
           {"where", where},
-          {"stages", stages_json},
-          {"advice", advice}};
+          {"stages", hystbench::to_json(stages)},
+          {"advice", advice},
+          {"judged_on", judged_on}};
 }
 
 }  // namespace hystbench

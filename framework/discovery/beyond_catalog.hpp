@@ -37,11 +37,12 @@ struct BeyondCatalog {
   // The significant candidate the partial-help rule refused ("" when none).
   std::string refused;
   double refused_share = 0.0;
-  // Every candidate tried, with the share of the excess it removed (held out).
+  // Every candidate tried, with the share of the excess it removed (on `judged_on`).
   std::vector<std::pair<std::string, double>> tried;
   std::vector<std::string> where;  // sentences: where the error concentrates
   std::vector<StageLead> stages;   // the best single term of each stage
   std::string advice;
+  std::string judged_on = "held-out";  // the data the shares are of: "held-out" or "estimation"
 
   nlohmann::json to_json() const;
 };

@@ -24,7 +24,9 @@ constexpr int kChanceCcfLags = 2;
 
 struct Completeness {
   bool complete = false;
-  // "white_at_floor", "coloured_at_floor", "systematic" or "no_noise_estimate".
+  // "white_at_floor", "coloured_at_floor", "systematic" or "no_noise_estimate";
+  // a diagnosis turns "systematic" into "beyond_catalog" when no catalog
+  // effect captures what is left (beyond_catalog.hpp).
   std::string kind = "systematic";
   std::string reason;  // one or two plain sentences with the numbers
   double sigma = 0.0;  // noise estimate, units of y

@@ -251,6 +251,7 @@ bool refuse_partial(Diagnosis& d) {
   if (!(share < kPartialShare)) return false;
   d.beyond.refused = d.verdict;
   d.beyond.refused_share = share;
+  d.beyond.judged_on = d.errors.n_heldout > 0 ? "held-out" : "estimation";
   d.verdict = "none";
   return true;
 }

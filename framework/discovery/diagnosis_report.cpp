@@ -86,8 +86,9 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
   if (!w) {
     if (!d.beyond.refused.empty())
       out << "**none**: " << d.beyond.refused << " is significant but removes only "
-          << num(100.0 * d.beyond.refused_share) << " % of the error left above the noise on the held-out "
-          << "data; an effect must remove " << num(100.0 * kPartialShare) << " % to be added.";
+          << num(100.0 * d.beyond.refused_share) << " % of the error left above the noise on the "
+          << d.beyond.judged_on << " data; an effect must remove " << num(100.0 * kPartialShare)
+          << " % to be added.";
     else
       out << "**none**: no effect of the catalog improves the fit enough (ΔBIC ≤ "
           << num(d.options.value("bic_threshold", -10.0)) << " and a held-out RMSE at least "

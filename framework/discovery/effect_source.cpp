@@ -18,6 +18,16 @@ std::string replace_all(std::string text, const std::string& key, const std::str
 
 std::string exact(double v) { return format_number("%.17g", v); }
 
+// Text inside a C++ string literal of the generated source.
+std::string literal(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch == '\n' ? ' ' : ch;
+  }
+  return out;
+}
+
 // What the effect is built from and adds to, as the comments of the source say it.
 struct StageForm {
   const char* stage;   // EffectStage enumerator
@@ -52,7 +62,7 @@ constexpr const char* kCommon = R"src(// Proposed from data by `hystbench propos
 // from the residual of the model @MODEL@ fitted to @DATA@. It explained @SHARE@ %
 // of what that fit left; proposed coefficient @COEF@ ± @SE@ (normalised units).
 //
-//   signal[k] += c·@TERM@,   @SYMBOL@' = (@SYMBOL@[k] − @SYMBOL@[k−1]) / Ts,   @SYMBOL@[−1] = 0
+//   signal[k] += c·@TERM@,   @SYMBOL@' = (@SYMBOL@[k] − @SYMBOL@[k−1]) / Ts,   @SYMBOL@'[0] = 0
 //
 // with @SYMBOL@ @SIGNAL@. c = 0 leaves the signal unchanged.
 // Build: see docs/plugins.md (out of the tree: a shared library).
@@ -79,7 +89,7 @@ double term(double a, double a_rate) {
 hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
   const Eigen::VectorXd& a = r.@VIEW_MEMBER@;
   Eigen::VectorXd phi(a.size());
-  double previous = 0.0;
+  double previous = a.size() ? a[0] : 0.0;  // no rate before the record
   for (Eigen::Index k = 0; k < a.size(); ++k) {
     phi[k] = term(a[k], (a[k] - previous) / r.sample_time);
     previous = a[k];
@@ -110,7 +120,7 @@ constexpr const char* kAdditive = R"src(
     if (c == 0.0) return true;  // neutral: the signal is left exactly as it was
     if (!(ctx.sample_time > 0.0) || !ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
     const Eigen::VectorXd& a = *ctx.stage_input;
-    double previous = 0.0;
+    double previous = a.size() ? a[0] : 0.0;  // no rate before the record
     for (Eigen::Index k = 0; k < signal.size(); ++k) {
       signal[k] += c * term(a[k], (a[k] - previous) / ctx.sample_time);
       previous = a[k];
@@ -137,6 +147,7 @@ constexpr const char* kForce = R"src(
       if (!(zeta > 0.0)) return false;
       const auto [k2, q, a0] = hystbench::tustin_resonance(period / (std::numbers::pi * Ts), zeta);
       g = {(k2 + q) / a0, -2.0 * k2 / a0, (k2 - q) / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
+      if (!std::isfinite(g[3]) || !std::isfinite(g[4]) || !std::isfinite(g[0])) return false;
     }
     hystbench::BiquadState<double> state{};
     double x1 = 0.0;  // the output one sample earlier
@@ -154,14 +165,16 @@ constexpr const char* kForce = R"src(
         // solved by Newton's method from the previous output.
         const auto residual = [&](double x) { return x - output(w + c * term(x, (x - x1) / Ts)); };
         double x = x1;
-        for (int i = 0; i < 8; ++i) {
+        bool converged = false;
+        for (int i = 0; i < 12 && !converged; ++i) {
           const double f = residual(x), h = 1e-7 * std::max(1.0, std::abs(x));
           const double slope = (residual(x + h) - f) / h;
           if (!std::isfinite(f) || !std::isfinite(slope) || slope == 0.0) return false;
           const double step = f / slope;
           x -= step;
-          if (std::abs(step) <= 1e-14 * std::max(1.0, std::abs(x))) break;
+          converged = std::abs(step) <= 1e-12 * std::max(1.0, std::abs(x));
         }
+        if (!converged) return false;  // no output consistent with its force: diverging
         force = c * term(x, (x - x1) / Ts);
       }
       const double input = w + force;
@@ -180,7 +193,8 @@ HYSTBENCH_EFFECT(@CLASS@)
 std::string param_text(const std::string& name, double lower, double upper, double neutral, int y_power,
                        int u_power, const std::string& unit, const std::string& doc) {
   return "{\"" + name + "\", " + exact(lower) + ", " + exact(upper) + ", " + exact(neutral) + ", " +
-         std::to_string(y_power) + ", " + std::to_string(u_power) + ", \"" + unit + "\", \"" + doc + "\"}";
+         std::to_string(y_power) + ", " + std::to_string(u_power) + ", \"" + literal(unit) + "\", \"" + literal(doc) +
+         "\"}";
 }
 
 std::string params_text(const ProposedTerm& t) {
@@ -237,8 +251,8 @@ std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceCont
       {"@STAGE@", f.stage},
       {"@SYMBOL@", t.term.symbol()},
       {"@SIGNAL@", f.signal},
-      {"@MODEL@", context.model},
-      {"@DATA@", context.data_name},
+      {"@MODEL@", literal(context.model)},
+      {"@DATA@", literal(context.data_name)},
       {"@SHARE@", format_number("%.3g", 100.0 * t.err)},
       {"@COEF@", format_number("%.6g", t.coefficient)},
       {"@SE@", format_number("%.2g", t.standard_error)},

@@ -28,10 +28,10 @@ struct StageSignals {
   std::vector<Eigen::VectorXd> signal, rate;  // by TermStage
 };
 
-StageSignals stage_signals(const ModelData& data, const Model::ChainSignals& chain, const Eigen::VectorXd& y) {
+StageSignals stage_signals(const ModelData& data, const Model::ChainSignals& chain) {
   StageSignals s;
   for (TermStage stage : {TermStage::Input, TermStage::Static, TermStage::Dynamics, TermStage::Output}) {
-    s.signal.push_back(stage_signal(stage, data, chain, y));
+    s.signal.push_back(stage_signal(stage, data, chain));
     s.rate.push_back(rate_of(s.signal.back(), data.sample_time));
   }
   return s;
@@ -107,70 +107,112 @@ nlohmann::json ProposeOptions::to_json() const {
           {"heldout_gain", regression.heldout_gain}};
 }
 
-Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
-                       const ProposeOptions& options) {
-  if (options.degree < 1 || options.degree > 9)
-    throw InputError("propose: --degree must be between 1 and 9 (got " + std::to_string(options.degree) + ")");
+namespace {
+
+// Every library term's column, the model's own sensitivities, and the
+// residual, all on every sample.
+struct Columns {
+  Eigen::MatrixXd terms, own;
+  Eigen::VectorXd scale, e;
+};
+
+Columns regression_columns(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                           const std::vector<CandidateTerm>& library) {
   Eigen::VectorXd y_model;
   Model::ChainSignals chain;
   if (!model.simulate_probed(x, data, y_model, Model::Entry::Output, nullptr, &chain))
     throw InputError("propose: the fitted model " + model.text() +
                      " diverges on these data; fit it to them first (hystbench fit)");
-  const StageSignals signals = stage_signals(data, chain, y_model);
-  const std::vector<CandidateTerm> library = term_library(options.degree);
-  const Eigen::Index n = data.size(), m = Eigen::Index(library.size());
-  Eigen::MatrixXd columns(n, m);
-  Eigen::VectorXd scale(m);
+  const StageSignals signals = stage_signals(data, chain);
+  const Eigen::Index m = Eigen::Index(library.size());
+  Columns c{Eigen::MatrixXd(data.size(), m), parameter_columns(model, x, data, y_model), Eigen::VectorXd(m),
+            data.y - y_model};
 #pragma omp parallel for schedule(dynamic)
   for (Eigen::Index j = 0; j < m; ++j)
-    columns.col(j) = output_change(model, x, data, library[std::size_t(j)], signals, y_model, scale[j]);
+    c.terms.col(j) = output_change(model, x, data, library[std::size_t(j)], signals, y_model, c.scale[j]);
+  return c;
+}
 
-  const Eigen::VectorXd e = data.y - y_model;
-  const Eigen::MatrixXd own = parameter_columns(model, x, data, y_model);
+// The chosen terms with their coefficients in the terms' own units.
+std::vector<ProposedTerm> chosen_terms(const ForwardRegression& r, const std::vector<CandidateTerm>& library,
+                                       const Eigen::VectorXd& scale, double y_scale) {
+  std::vector<ProposedTerm> out;
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const ForwardStep& s = r.steps[i];
+    const double c = scale[s.column];
+    out.push_back({library[std::size_t(s.column)], r.coefficients[Eigen::Index(i)] / c,
+                   r.standard_errors[Eigen::Index(i)] / c, s.err, s.delta_bic, s.check_rms * y_scale,
+                   s.runner_up >= 0 ? term_key(library[std::size_t(s.runner_up)]) : "", s.runner_up_err});
+  }
+  return out;
+}
+
+// Per stage, the term with the largest share at the first step.
+std::vector<StageLead> stage_leads(const ForwardRegression& r, const std::vector<CandidateTerm>& library) {
+  std::vector<StageLead> leads;
+  for (std::size_t j = 0; j < library.size(); ++j) {
+    const CandidateTerm& t = library[j];
+    auto lead = std::find_if(leads.begin(), leads.end(), [&](const StageLead& l) { return l.stage == t.stage; });
+    if (lead == leads.end()) lead = leads.insert(leads.end(), {t.stage, "", 0.0});
+    if (r.first_err[Eigen::Index(j)] > lead->share) *lead = {t.stage, t.text(), r.first_err[Eigen::Index(j)]};
+  }
+  return leads;
+}
+
+// Residual RMS before and after the chosen terms and the refit of the
+// model's own parameters that goes with them, estimation and held out.
+void residual_errors(const Columns& c, const ForwardRegression& r, const ModelData& data, Proposal& p) {
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(c.terms.cols());
+  for (std::size_t i = 0; i < r.steps.size(); ++i) theta[r.steps[i].column] = r.coefficients[Eigen::Index(i)];
+  const Eigen::VectorXd after = c.e - c.terms * theta - c.own * r.fixed_coefficients;
+  const double sy = data.scales.y;
+  const Eigen::VectorXd fit_e = rows_where(c.e, data.estimation, true), held_e = rows_where(c.e, data.estimation, false);
+  p.n_estimation = long(fit_e.size());
+  p.n_heldout = long(held_e.size());
+  p.rmse_estimation = rms(fit_e) * sy;
+  p.rmse_estimation_after = rms(rows_where(after, data.estimation, true)) * sy;
+  p.rmse_heldout = rms(held_e) * sy;
+  p.rmse_heldout_after = rms(rows_where(after, data.estimation, false)) * sy;
+}
+
+}  // namespace
+
+Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
+                       const ProposeOptions& options) {
+  if (options.degree < 1 || options.degree > 6)
+    throw InputError("propose: the degree must be between 1 and 6 (got " + std::to_string(options.degree) + ")");
+  const std::vector<CandidateTerm> library = term_library(options.degree);
+  const Columns c = regression_columns(model, x, data, library);
   const auto rows = [&](bool estimation) {
-    return RegressionRows{rows_where(columns, data.estimation, estimation), rows_where(e, data.estimation, estimation),
-                          rows_where(own, data.estimation, estimation)};
+    return RegressionRows{rows_where(c.terms, data.estimation, estimation), rows_where(c.e, data.estimation, estimation),
+                          rows_where(c.own, data.estimation, estimation)};
   };
   const RegressionRows fit = rows(true), check = rows(false);
   const ForwardRegression r = forward_regression(fit, options.regression, check.e.size() ? &check : nullptr);
 
   Proposal p;
   p.model = model.text();
-  p.library_size = int(m);
+  p.library_size = int(library.size());
   p.options = options;
-  Eigen::VectorXd theta = Eigen::VectorXd::Zero(m);
-  for (std::size_t i = 0; i < r.steps.size(); ++i) {
-    const ForwardStep& s = r.steps[i];
-    const double c = scale[s.column];
-    theta[s.column] = r.coefficients[Eigen::Index(i)];
-    p.terms.push_back({library[std::size_t(s.column)], r.coefficients[Eigen::Index(i)] / c,
-                       r.standard_errors[Eigen::Index(i)] / c, s.err, s.delta_bic,
-                       s.check_rms * data.scales.y,
-                       s.runner_up >= 0 ? term_key(library[std::size_t(s.runner_up)]) : "", s.runner_up_err});
-  }
-  for (Eigen::Index j = 0; j < m; ++j) {
-    const CandidateTerm& t = library[std::size_t(j)];
-    auto lead = std::find_if(p.stage_leads.begin(), p.stage_leads.end(),
-                             [&](const StageLead& l) { return l.stage == t.stage; });
-    if (lead == p.stage_leads.end()) lead = p.stage_leads.insert(p.stage_leads.end(), {t.stage, "", 0.0});
-    if (r.first_err[j] > lead->share) *lead = {t.stage, t.text(), r.first_err[j]};
-  }
+  p.terms = chosen_terms(r, library, c.scale, data.scales.y);
+  p.stage_leads = stage_leads(r, library);
   if (r.refused.column >= 0) {
     p.refused = term_key(library[std::size_t(r.refused.column)]);
     p.refused_by = r.refused_by;
     p.refused_err = r.refused.err;
     p.refused_delta_bic = r.refused.delta_bic;
   }
-  // The terms and the refit of the model's own parameters that goes with them.
-  const Eigen::VectorXd e_after = e - columns * theta - own * r.fixed_coefficients;
-  const double sy = data.scales.y;
-  p.n_estimation = long(fit.e.size());
-  p.n_heldout = long(check.e.size());
-  p.rmse_estimation = rms(fit.e) * sy;
-  p.rmse_estimation_after = rms(rows_where(e_after, data.estimation, true)) * sy;
-  p.rmse_heldout = rms(check.e) * sy;
-  p.rmse_heldout_after = rms(rows_where(e_after, data.estimation, false)) * sy;
+  residual_errors(c, r, data, p);
   return p;
+}
+
+nlohmann::json to_json(const std::vector<StageLead>& leads) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StageLead& l : leads)
+    out.push_back({{"stage", term_stage_name(l.stage)},
+                   {"term", l.term.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.term)},
+                   {"share_of_residual", number_or_null(l.share)}});
+  return out;
 }
 
 nlohmann::json Proposal::to_json() const {
@@ -195,13 +237,8 @@ nlohmann::json Proposal::to_json() const {
   if (!refused.empty())
     refused_json = {{"term", refused}, {"refused_by", refused_by}, {"share_of_residual", number_or_null(refused_err)},
                     {"delta_bic", number_or_null(refused_delta_bic)}};
-  nlohmann::json leads = nlohmann::json::array();
-  for (const StageLead& l : stage_leads)
-    leads.push_back({{"stage", term_stage_name(l.stage)},
-                     {"term", l.term.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.term)},
-                     {"share_of_residual", number_or_null(l.share)}});
   return {{"model", model},
-          {"stage_leads", leads},
+          {"stage_leads", hystbench::to_json(stage_leads)},
           {"library_size", library_size},
           {"options", options.to_json()},
           {"terms", terms_json},

@@ -23,10 +23,10 @@
 // coefficient comes from least squares on the chosen columns beside the
 // parameters' sensitivities.
 //
-// A term built from the dynamics' output (stage "dynamics") is evaluated on
-// the fitted model's output as it is, so that the regression stays linear;
-// as a force inside the dynamics it feeds back, which the generated effect
-// (effect_source.hpp) simulates.
+// A term of stage "dynamics" is evaluated on the fitted resonance's output
+// as it is, so that the regression stays linear; as a force inside the
+// dynamics it feeds back, which the generated effect (effect_source.hpp)
+// simulates.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -38,7 +38,7 @@
 namespace hystbench {
 
 struct ProposeOptions {
-  int degree = 3;  // of the term library
+  int degree = 3;  // of the term library, 1 to 6
   ForwardRegressionOptions regression;
 
   nlohmann::json to_json() const;
@@ -48,7 +48,9 @@ struct ProposedTerm {
   CandidateTerm term;
   double coefficient = 0.0;     // normalised units: the term's contribution at its stage
   double standard_error = 0.0;
-  double err = 0.0;             // share of the estimation residual's sum of squares it explains
+  // Share of the estimation residual's sum of squares it explains, beyond
+  // the terms before it and what a refit of the model's own parameters does.
+  double err = 0.0;
   double delta_bic = 0.0;       // of adding it, given the terms before it
   double heldout_rmse = 0.0;    // held-out residual RMS (units of y) with it and the terms before it
   std::string runner_up;        // the best other term at its step ("" when none)
@@ -61,6 +63,9 @@ struct StageLead {
   std::string term;   // "" when no term of the stage explains anything
   double share = 0.0;
 };
+
+// [{"stage", "term", "share_of_residual"}]
+nlohmann::json to_json(const std::vector<StageLead>& leads);
 
 struct Proposal {
   std::string model;             // the fitted model's effects

@@ -84,20 +84,19 @@ std::vector<CandidateTerm> term_library(int degree) {
   return out;
 }
 
-const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain,
-                                    const Eigen::VectorXd& y_model) {
+const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain) {
   switch (stage) {
     case TermStage::Input: return data.u;
     case TermStage::Static: return chain.v;
-    case TermStage::Dynamics: return chain.x;
-    case TermStage::Output: return y_model;
+    case TermStage::Dynamics: return chain.resonance;
+    case TermStage::Output: return chain.x;
   }
-  return y_model;
+  return chain.x;
 }
 
 Eigen::VectorXd rate_of(const Eigen::VectorXd& a, double sample_time) {
   Eigen::VectorXd r(a.size());
-  double previous = 0.0;
+  double previous = a.size() ? a[0] : 0.0;
   for (Eigen::Index k = 0; k < a.size(); ++k) {
     r[k] = (a[k] - previous) / sample_time;
     previous = a[k];

@@ -3,14 +3,15 @@
 // powers and products of one signal of the fitted chain and of its rate,
 // each entering the chain where that signal lives:
 //
-//   stage      built from                         added to
-//   input      u, the measured input              the drive v, before the gain
-//   static     v, the drive                       the dynamics' input w
-//   dynamics   x, the dynamics' output            the dynamics' input w (a force)
-//   output     ŷ, the model output                the output
+//   stage      built from                              added to
+//   input      u, the measured input                   the drive v, before the gain
+//   static     v, the drive                            the dynamics' input w
+//   dynamics   x, the first dynamics effect's output   the dynamics' input w (a force
+//              (the resonance, msd in the seed chain)  that depends on the state)
+//   output     y, the dynamics' output                 the output
 //
 // A term is f(a)·g(a') with a the stage's signal, a' = (a[k] − a[k−1])/Ts its
-// rate (a[−1] = 0: every model starts from rest), and each factor |a|ᵖ or
+// rate (0 at the first sample), and each factor |a|ᵖ or
 // |a|ᵖ·sign(a): both parities of every power, so that a·|a| (an odd
 // square) and |a|³ (an even cube) are candidates beside a² and a³. Every
 // term up to a total degree (default 3) at every stage.
@@ -56,11 +57,10 @@ struct CandidateTerm {
 std::vector<CandidateTerm> term_library(int degree);
 
 // The signal terms of `stage` are built from, on every sample of one
-// simulation (normalised units): u from the data, v, x from the chain, ŷ.
-const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain,
-                                    const Eigen::VectorXd& y_model);
+// simulation (normalised units): u from the data, the rest from the chain.
+const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain);
 
-// (a[k] − a[k−1]) / Ts with a[−1] = 0.
+// (a[k] − a[k−1]) / Ts, and 0 at k = 0 (no rate before the record).
 Eigen::VectorXd rate_of(const Eigen::VectorXd& a, double sample_time);
 
 }  // namespace hystbench

@@ -196,10 +196,13 @@ bool Model::simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const Mo
   y = data.u;
   SignalContext ctx{data.sample_time, &data.t, &stage_input, substeps_, input_hold_};
   auto run_stage = [&](EffectStage stage) {
+    bool first = true;
     for (const auto& e : entries_) {
       if (e.info->stage != stage) continue;
       std::span<const double> p(x.data() + e.offset, e.info->params.size());
       if (!e.effect->apply(p, ctx, y)) return false;
+      if (signals && stage == EffectStage::Dynamics && first) signals->resonance = y;
+      first = false;
     }
     return true;
   };
@@ -210,7 +213,7 @@ bool Model::simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const Mo
   y *= x[0];
   if (!run_stage(EffectStage::Nonlinearity)) return false;
   add_at(Entry::Dynamics);
-  if (signals) signals->w = y;
+  if (signals) signals->w = signals->resonance = y;
   stage_input = y;
   if (!run_stage(EffectStage::Dynamics)) return false;
   if (signals) signals->x = y;

@@ -77,10 +77,12 @@ class Model {
   // input effects, before the gain: the nonlinearity sees it), to the
   // dynamics' input w, or to the output.
   enum class Entry { Drive, Dynamics, Output };
-  // The inner signals of one simulation: the drive v, the dynamics' input w
-  // and the dynamics' output (before the output effects).
+  // The inner signals of one simulation: the drive v, the dynamics' input
+  // w, the output of the first dynamics effect (the resonance a force
+  // inside the dynamics acts on; w when there is none) and the dynamics'
+  // output x (before the output effects).
   struct ChainSignals {
-    Eigen::VectorXd v, w, x;
+    Eigen::VectorXd v, w, resonance, x;
   };
   // simulate() with `added` (when not null) added to the signal at `entry`,
   // and the inner signals written to `signals` (when not null).

@@ -46,7 +46,7 @@ Scores score(const Eigen::MatrixXd& Q, const Eigen::VectorXd& own_norm2, const s
 Eigen::MatrixXd design(const RegressionRows& rows, const std::vector<int>& chosen) {
   Eigen::MatrixXd A(rows.P.rows(), Eigen::Index(chosen.size()) + rows.fixed.cols());
   for (std::size_t i = 0; i < chosen.size(); ++i) A.col(Eigen::Index(i)) = rows.P.col(chosen[i]);
-  A.rightCols(rows.fixed.cols()) = rows.fixed;
+  if (rows.fixed.cols() > 0) A.rightCols(rows.fixed.cols()) = rows.fixed;
   return A;
 }
 
@@ -74,7 +74,12 @@ void fit_chosen(const RegressionRows& fit, const std::vector<int>& chosen, Forwa
   if (k == 0) return;
   const double dof = std::max<double>(1.0, double(A.rows() - A.cols()));
   const double s2 = (fit.e - A * theta).squaredNorm() / dof;
-  r.standard_errors = ((A.transpose() * A).inverse().diagonal() * s2).head(k).cwiseSqrt();
+  // Columns scaled to unit norm first: the sensitivities and the terms
+  // differ by orders of magnitude, and AᵀA squares that.
+  const Eigen::VectorXd norm = A.colwise().norm().transpose().cwiseMax(std::numeric_limits<double>::min());
+  const Eigen::MatrixXd scaled = A * norm.cwiseInverse().asDiagonal();
+  const Eigen::VectorXd variance = (scaled.transpose() * scaled).inverse().diagonal() * s2;
+  r.standard_errors = (variance.array().sqrt() / norm.array()).head(k);
 }
 
 // Removes from every column of Q and from e their part in the span of `fixed`.
