@@ -45,7 +45,11 @@ run_case() {
   "$exe" discover --data data.csv --start "$seed_chain" --plugin "$dir/effect-build/proposed_term.so" \
     --candidates proposed_term --out with_effect > with_effect.log
   echo "with_effect_seconds=$((SECONDS - t0))" >> timings.txt
+  # What is committed: reports, JSON, gnuplot scripts and PNG figures; not
+  # the data, the plot data or the PDF/SVG renderings.
   rm -rf "$dir/effect-build" data.csv
+  find "$dir" \( -name '*.pdf' -o -name '*.svg' -o -name '*.dat' -o -name fit_model.csv -o -name gnuplot.log \
+                 -o -name checkpoint.json \) -delete
   cd "$repo"
 }
 
@@ -88,7 +92,7 @@ for case, cat, prop, eff, sd, first, t in rows:
         return s["model"], s["heldout_rmse"] / sd, ("yes" if l["complete"] else "no") + f" ({l['completeness']['kind']})"
     cm, cr, cc = rung(cat)
     em, er, ec = rung(eff)
-    fp = f"{first['stage']}: {first['term']}" if first else "none"
+    fp = (f"{first['stage']}: {first['term']}" if first else "none").replace("|", "\\|")
     share = f"{100 * first['share_of_residual']:.1f} %" if first else "–"
     lines.append(f"| {case} | `{cm}` | {cr:.3f} | {cc} | {fp} | {share} | `{em}` | {er:.3f} | {ec} |")
 lines.append("")

@@ -40,6 +40,32 @@ std::string segment_sentence(const Comparison& c) {
   return "by segment: largest in " + worst->segment + " (RMSE " + g4(worst->metrics.rmse) + ")";
 }
 
+// RMSE where the drive moves fastest (top quarter of |Δu|) against where it
+// moves slowest (bottom quarter).
+std::string rate_sentence(const Diagnosis& d, const ModelData& data) {
+  Eigen::VectorXd y;
+  const Eigen::Index n = data.size();
+  if (n < 8 || !d.model.simulate(d.x, data, y)) return "";
+  std::vector<std::pair<double, double>> by_rate;  // |Δu|, e²
+  for (Eigen::Index k = 1; k < n; ++k) {
+    const double e = (data.y[k] - y[k]) * data.scales.y;
+    by_rate.push_back({std::abs(data.u[k] - data.u[k - 1]), e * e});
+  }
+  std::sort(by_rate.begin(), by_rate.end());
+  const std::size_t q = by_rate.size() / 4;
+  const auto rmse = [&](std::size_t from, std::size_t to) {
+    double sum = 0.0;
+    for (std::size_t i = from; i < to; ++i) sum += by_rate[i].second;
+    return std::sqrt(sum / double(to - from));
+  };
+  const double slow = rmse(0, q), fast = rmse(by_rate.size() - q, by_rate.size());
+  const std::string which = fast > 1.2 * slow ? "larger where the drive moves fast"
+                            : slow > 1.2 * fast ? "larger where the drive moves slowly"
+                                                : "alike at every drive rate";
+  return "by rate: " + which + " (RMSE " + g4(fast) + " in the fastest quarter of samples, " + g4(slow) +
+         " in the slowest)";
+}
+
 std::string stage_sentence(const std::vector<StageLead>& leads) {
   std::vector<StageLead> sorted = leads;
   std::stable_sort(sorted.begin(), sorted.end(), [](const StageLead& a, const StageLead& b) { return a.share > b.share; });
@@ -72,7 +98,8 @@ void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
   b.applies = true;
   b.judged_on = d.errors.n_heldout > 0 ? "held-out" : "estimation";
   for (const Candidate& c : d.candidates) b.tried.push_back({c.effect, candidate_share(d, c.effect)});
-  for (const std::string& s : {amplitude_sentence(d.where), direction_sentence(d.where), segment_sentence(d.where)})
+  for (const std::string& s : {amplitude_sentence(d.where), rate_sentence(d, data), direction_sentence(d.where),
+                               segment_sentence(d.where)})
     if (!s.empty()) b.where.push_back(s);
   ProposeOptions probe;
   probe.regression.max_terms = 1;

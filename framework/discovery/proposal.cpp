@@ -12,15 +12,6 @@ namespace {
 // Size of the probe added at a stage, for unit-RMS terms in normalised units.
 constexpr double kProbe = 1e-6;
 
-std::string entry_name(Model::Entry entry) {
-  switch (entry) {
-    case Model::Entry::Drive: return "drive v, before the gain";
-    case Model::Entry::Dynamics: return "dynamics input w";
-    case Model::Entry::Output: return "output";
-  }
-  return "?";
-}
-
 std::string term_key(const CandidateTerm& t) { return term_stage_name(t.stage) + ": " + t.text(); }
 
 // The chain's signals the terms are built from, and their rates.

@@ -19,9 +19,7 @@ std::string terms_table(const Proposal& p, const std::string& unit) {
     const ProposedTerm& t = p.terms[i];
     const std::string runner = t.runner_up.empty() ? "–" : t.runner_up + " (" + percent(t.runner_up_err) + ")";
     out += markdown::row({std::to_string(i + 1), term_stage_name(t.term.stage), t.term.text(),
-                          std::string(t.term.entry() == Model::Entry::Drive      ? "drive v"
-                                      : t.term.entry() == Model::Entry::Dynamics ? "dynamics input w"
-                                                                                 : "output"),
+                          entry_name(t.term.entry()),
                           num(t.coefficient) + " ± " + num(t.standard_error), percent(t.err), num(t.delta_bic),
                           num(t.heldout_rmse), runner});
   }

@@ -71,6 +71,15 @@ Model::Entry CandidateTerm::entry() const {
   return Model::Entry::Output;
 }
 
+std::string entry_name(Model::Entry entry) {
+  switch (entry) {
+    case Model::Entry::Drive: return "drive v";
+    case Model::Entry::Dynamics: return "dynamics input w";
+    case Model::Entry::Output: return "output";
+  }
+  return "?";
+}
+
 std::vector<CandidateTerm> term_library(int degree) {
   std::vector<CandidateTerm> out;
   // Input last: with no effect between the drive and the static block's

@@ -56,6 +56,9 @@ struct CandidateTerm {
 // the signal, then parities).
 std::vector<CandidateTerm> term_library(int degree);
 
+// Where a term enters: "drive v", "dynamics input w" or "output".
+std::string entry_name(Model::Entry entry);
+
 // The signal terms of `stage` are built from, on every sample of one
 // simulation (normalised units): u from the data, the rest from the chain.
 const Eigen::VectorXd& stage_signal(TermStage stage, const ModelData& data, const Model::ChainSignals& chain);

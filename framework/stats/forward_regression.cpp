@@ -20,16 +20,24 @@ struct Scores {
   ForwardStep best, second;
 };
 
+// ERR of column j of Q against the target left (sum of squares ee); 0 for
+// a column that is a combination of those taken.
+double err_of(const Eigen::MatrixXd& Q, Eigen::Index j, const Eigen::VectorXd& own_norm2, const Eigen::VectorXd& e,
+              double ee) {
+  const double qq = Q.col(j).squaredNorm();
+  if (!(qq > kCollinear * own_norm2[j])) return 0.0;
+  const double qe = Q.col(j).dot(e);
+  return qe * qe / (qq * ee);
+}
+
 // The best and second-best remaining columns by ERR.
 Scores score(const Eigen::MatrixXd& Q, const Eigen::VectorXd& own_norm2, const std::vector<bool>& taken,
              const Eigen::VectorXd& e, double ee) {
   Scores s;
   for (Eigen::Index j = 0; j < Q.cols(); ++j) {
     if (taken[std::size_t(j)]) continue;
-    const double qq = Q.col(j).squaredNorm();
-    if (!(qq > kCollinear * own_norm2[j])) continue;
-    const double qe = Q.col(j).dot(e);
-    const double err = qe * qe / (qq * ee);
+    const double err = err_of(Q, j, own_norm2, e, ee);
+    if (!(err > 0.0)) continue;
     // A column equal to the best one up to rounding (the same term entering
     // through an identical path) does not displace it: the earlier wins.
     if (err > s.best.err * (1.0 + kTie)) {
@@ -97,49 +105,57 @@ double bic_change(double err, double explained, double n) {
   return n * std::log(std::max(1.0 - err / left, tiny)) + std::log(n);
 }
 
-// The fixed columns without those that are combinations of others (a
-// parameter at a value where it does nothing has a zero sensitivity), so
-// that the final fit's covariance exists; `kept` lists them.
-Eigen::MatrixXd independent_columns(const Eigen::MatrixXd& fixed, std::vector<Eigen::Index>& kept) {
-  kept.clear();
-  if (fixed.cols() == 0) return fixed;
+// The fixed columns that are not combinations of others (a parameter at a
+// value where it does nothing has a zero sensitivity), so that the final
+// fit's covariance exists.
+std::vector<Eigen::Index> independent_columns(const Eigen::MatrixXd& fixed) {
+  std::vector<Eigen::Index> kept;
+  if (fixed.cols() == 0) return kept;
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(fixed);
   qr.setThreshold(1e-10);
   for (Eigen::Index i = 0; i < qr.rank(); ++i) kept.push_back(qr.colsPermutation().indices()[i]);
   std::sort(kept.begin(), kept.end());
-  Eigen::MatrixXd out(fixed.rows(), Eigen::Index(kept.size()));
-  for (std::size_t i = 0; i < kept.size(); ++i) out.col(Eigen::Index(i)) = fixed.col(kept[i]);
+  return kept;
+}
+
+// The rows with only the independent fixed columns (`kept`).
+RegressionRows with_fixed(const RegressionRows& rows, const std::vector<Eigen::Index>& kept) {
+  RegressionRows out{rows.P, rows.e, Eigen::MatrixXd(rows.fixed.rows(), Eigen::Index(kept.size()))};
+  for (std::size_t i = 0; i < kept.size(); ++i) out.fixed.col(Eigen::Index(i)) = rows.fixed.col(kept[i]);
   return out;
 }
 
-}  // namespace
+// Which rule refuses `step` after `taken` steps ("" when none does).
+std::string refusal(const ForwardStep& step, std::size_t taken, double check_rms, bool checked,
+                    const ForwardRegressionOptions& o) {
+  if (int(taken) >= o.max_terms) return "max_terms";
+  if (step.delta_bic > o.bic_threshold) return "bic";
+  if (checked && step.check_rms > (1.0 - o.heldout_gain) * check_rms) return "heldout";
+  return "";
+}
 
-ForwardRegression forward_regression(const RegressionRows& given_fit, const ForwardRegressionOptions& options,
-                                     const RegressionRows* given_check) {
-  std::vector<Eigen::Index> kept;
-  const RegressionRows fit{given_fit.P, given_fit.e, independent_columns(given_fit.fixed, kept)};
-  RegressionRows check_rows;
-  if (given_check) {
-    check_rows = {given_check->P, given_check->e, Eigen::MatrixXd(given_check->fixed.rows(), Eigen::Index(kept.size()))};
-    for (std::size_t i = 0; i < kept.size(); ++i) check_rows.fixed.col(Eigen::Index(i)) = given_check->fixed.col(kept[i]);
-  }
-  const RegressionRows* check = given_check ? &check_rows : nullptr;
-  ForwardRegression r;
+// Modified Gram–Schmidt: every remaining column loses its part along column c.
+void orthogonalise(Eigen::MatrixXd& Q, int c, const std::vector<bool>& taken) {
+  const Eigen::VectorXd q = Q.col(c);
+  const double qq = q.squaredNorm();
+  for (Eigen::Index j = 0; j < Q.cols(); ++j)
+    if (!taken[std::size_t(j)]) Q.col(j) -= (q.dot(Q.col(j)) / qq) * q;
+}
+
+// The steps, on rows whose fixed columns are independent.
+void choose(const RegressionRows& fit, const RegressionRows* check, const ForwardRegressionOptions& options,
+            ForwardRegression& r, std::vector<int>& chosen) {
   Eigen::MatrixXd Q = fit.P;
   Eigen::VectorXd left = fit.e;
   project_out(fit.fixed, Q, left);
   const double ee = left.squaredNorm();
   r.fixed_share = fit.e.squaredNorm() > 0.0 ? 1.0 - ee / fit.e.squaredNorm() : 0.0;
-  std::vector<int> chosen;
   if (check) r.check_rms = rms_residual(*check, chosen, least_squares(fit, chosen));
   double check_rms = r.check_rms;
   const Eigen::VectorXd own_norm2 = fit.P.colwise().squaredNorm().transpose();
   std::vector<bool> taken(std::size_t(fit.P.cols()), false);
   r.first_err = Eigen::VectorXd::Zero(fit.P.cols());
-  for (Eigen::Index j = 0; j < Q.cols() && ee > 0.0; ++j) {
-    const double qq = Q.col(j).squaredNorm(), qe = Q.col(j).dot(left);
-    if (qq > kCollinear * own_norm2[j]) r.first_err[j] = qe * qe / (qq * ee);
-  }
+  for (Eigen::Index j = 0; j < Q.cols() && ee > 0.0; ++j) r.first_err[j] = err_of(Q, j, own_norm2, left, ee);
   while (ee > 0.0) {
     const Scores s = score(Q, own_norm2, taken, left, ee);
     ForwardStep step = s.best;
@@ -151,26 +167,32 @@ ForwardRegression forward_regression(const RegressionRows& given_fit, const Forw
     std::vector<int> with = chosen;
     with.push_back(step.column);
     if (check) step.check_rms = rms_residual(*check, with, least_squares(fit, with));
-    r.refused_by = int(chosen.size()) >= options.max_terms         ? "max_terms"
-                   : step.delta_bic > options.bic_threshold          ? "bic"
-                   : check && step.check_rms > (1.0 - options.heldout_gain) * check_rms ? "heldout"
-                                                                                          : "";
+    r.refused_by = refusal(step, chosen.size(), check_rms, check != nullptr, options);
     if (!r.refused_by.empty()) {
       r.refused = step;
-      break;
+      return;
     }
     chosen = with;
     check_rms = step.check_rms;
     r.steps.push_back(step);
     r.explained += step.err;
     taken[std::size_t(step.column)] = true;
-    // Modified Gram–Schmidt: every remaining column loses its part along the chosen one.
-    const Eigen::VectorXd q = Q.col(step.column);
-    const double qq = q.squaredNorm();
-    for (Eigen::Index j = 0; j < Q.cols(); ++j)
-      if (!taken[std::size_t(j)]) Q.col(j) -= (q.dot(Q.col(j)) / qq) * q;
+    orthogonalise(Q, step.column, taken);
   }
+}
+
+}  // namespace
+
+ForwardRegression forward_regression(const RegressionRows& given_fit, const ForwardRegressionOptions& options,
+                                     const RegressionRows* given_check) {
+  const std::vector<Eigen::Index> kept = independent_columns(given_fit.fixed);
+  const RegressionRows fit = with_fixed(given_fit, kept);
+  const RegressionRows check = given_check ? with_fixed(*given_check, kept) : RegressionRows{};
+  ForwardRegression r;
+  std::vector<int> chosen;
+  choose(fit, given_check ? &check : nullptr, options, r, chosen);
   fit_chosen(fit, chosen, r);
+  // Back to one coefficient per fixed column given, 0 for those left out.
   Eigen::VectorXd all = Eigen::VectorXd::Zero(given_fit.fixed.cols());
   for (std::size_t i = 0; i < kept.size(); ++i) all[kept[i]] = r.fixed_coefficients[Eigen::Index(i)];
   r.fixed_coefficients = all;
