@@ -17,17 +17,23 @@ std::vector<TermFactor> factors(int p) {
   return {{p, true}, {p, false}};
 }
 
+// What each stage means for a term, indexed by TermStage: its name, the
+// symbol of the signal terms are built from, and where they enter.
+struct StageRow {
+  const char* name;
+  const char* symbol;
+  Model::Entry entry;
+};
+constexpr std::array<StageRow, 4> kStages = {{{"input", "u", Model::Entry::Drive},
+                                              {"static", "v", Model::Entry::Dynamics},
+                                              {"dynamics", "x", Model::Entry::Dynamics},
+                                              {"output", "y", Model::Entry::Output}}};
+
+const StageRow& row(TermStage stage) { return kStages[std::size_t(stage)]; }
+
 }  // namespace
 
-std::string term_stage_name(TermStage stage) {
-  switch (stage) {
-    case TermStage::Input: return "input";
-    case TermStage::Static: return "static";
-    case TermStage::Dynamics: return "dynamics";
-    case TermStage::Output: return "output";
-  }
-  return "?";
-}
+std::string term_stage_name(TermStage stage) { return row(stage).name; }
 
 double TermFactor::value(double a) const {
   double m = 1.0;
@@ -44,15 +50,7 @@ std::string TermFactor::text(const std::string& a) const {
   return a + superscript(power - 1) + "·|" + a + "|";
 }
 
-std::string CandidateTerm::symbol() const {
-  switch (stage) {
-    case TermStage::Input: return "u";
-    case TermStage::Static: return "v";
-    case TermStage::Dynamics: return "x";
-    case TermStage::Output: return "y";
-  }
-  return "?";
-}
+std::string CandidateTerm::symbol() const { return row(stage).symbol; }
 
 std::string CandidateTerm::text() const {
   const std::string a = signal.text(symbol()), b = rate.text(symbol() + "'");
@@ -61,15 +59,7 @@ std::string CandidateTerm::text() const {
   return a + "·" + b;
 }
 
-Model::Entry CandidateTerm::entry() const {
-  switch (stage) {
-    case TermStage::Input: return Model::Entry::Drive;
-    case TermStage::Static:
-    case TermStage::Dynamics: return Model::Entry::Dynamics;
-    case TermStage::Output: return Model::Entry::Output;
-  }
-  return Model::Entry::Output;
-}
+Model::Entry CandidateTerm::entry() const { return row(stage).entry; }
 
 std::string entry_name(Model::Entry entry) {
   switch (entry) {

@@ -23,6 +23,7 @@
 
 namespace hystbench {
 
+// The order indexes the stage table of term_library.cpp.
 enum class TermStage { Input, Static, Dynamics, Output };
 
 // "input", "static", "dynamics", "output".
