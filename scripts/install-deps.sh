@@ -6,7 +6,8 @@ set -euo pipefail
 
 packages=(cmake g++ make libeigen3-dev libnlopt-cxx-dev nlohmann-json3-dev
           libcli11-dev libgtest-dev libbenchmark-dev gnuplot-nox
-          libopenmpi-dev openmpi-bin libsvm-dev)
+          libopenmpi-dev openmpi-bin libsvm-dev libmatio-dev
+          pybind11-dev python3-dev python3-numpy)
 # `install-deps.sh fuzz` (run by scripts/fuzz.sh) adds clang and its libFuzzer
 # runtime; `install-deps.sh tsan` (scripts/sanitize.sh tsan) adds clang, its
 # sanitizer runtimes and LLVM's OpenMP runtime with the Archer tool.

@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hystbench::cli {
 
@@ -22,6 +24,10 @@ void add_reference_option(CLI::App& command, std::string& reference);
 // expected, or that a subcommand is required.
 std::string unknown_command(const CLI::App& app, int argc, char** argv);
 
+// Every subcommand below on `app`, with its action, in the order `--help`
+// lists them.
+std::vector<std::pair<CLI::App*, Action>> add_all_commands(CLI::App& app);
+
 Action add_list_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
 Action add_simulate_command(CLI::App& app);
@@ -35,5 +41,6 @@ Action add_rank_command(CLI::App& app);
 Action add_control_command(CLI::App& app);
 Action add_svr_command(CLI::App& app);
 Action add_track_command(CLI::App& app);
+Action add_export_command(CLI::App& app);
 
 }  // namespace hystbench::cli

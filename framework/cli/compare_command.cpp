@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/mat_option.hpp"
 #include "framework/cli/comparison_output.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/number_range.hpp"
@@ -20,7 +21,7 @@ namespace {
 struct CompareOptions {
   DataOptions data;
   OutputOptions output;
-  std::string fit;
+  std::string fit, mat;
   int periods = 1;
 };
 
@@ -41,14 +42,15 @@ void report(const CompareOptions& o, const DataSource& source, const ModelData& 
   write_and_print_comparison(
       dir, source, data, std::move(y), model_text,
       model_text + " on " + o.data.data +
-          (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : ""));
+          (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : ""),
+      o.mat);
 }
 
 void compare(const CompareOptions& o, const CLI::App& cmd) {
   const nlohmann::json file = read_json_file(o.fit, "model file");
   if (SvrHammerstein::is_model_file(file)) {
     if (o.periods > 1) throw InputError("--periodic needs a catalog fit.json; an SVR model runs from measured samples");
-    compare_svr_model(file, o.fit, o.data, o.output, cmd);
+    compare_svr_model(file, o.fit, o.data, o.output, cmd, o.mat);
     return;
   }
   const FitRecord fit = FitRecord::read(o.fit);
@@ -78,6 +80,10 @@ Action add_compare_command(CLI::App& app) {
                   "the data are one period of a periodic input: simulate this many periods from "
                   "rest and score the last (steady state)")
       ->capture_default_str()->check(number_range(1, 1000, "give 1 to 1000 periods"));
+  cmd->add_option("--mat", o->mat,
+                  "also write t, u, y, the model output y_model and the residual as this MAT "
+                  "file (v7)")
+      ->check(mat_file_name("--mat"));
   add_threads_option(cmd);
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);

@@ -1,7 +1,8 @@
 #pragma once
 // What `compare` (and `diagnose` of an SVR model) write and print for a
 // model output set against the data: metrics.json, report.md and figures in
-// `dir`, then "model <line>", the headline errors and the files written.
+// `dir`, then "model <line>", the headline errors and the files written;
+// with `mat`, also t, u, y, y_model and the residual as that MAT file.
 #include <Eigen/Core>
 #include <filesystem>
 #include <string>
@@ -13,6 +14,6 @@ namespace hystbench::cli {
 
 Comparison write_and_print_comparison(const std::filesystem::path& dir, const DataSource& source,
                                       const ModelData& data, Eigen::VectorXd y_model, const std::string& model_text,
-                                      const std::string& model_line);
+                                      const std::string& model_line, const std::string& mat = "");
 
 }  // namespace hystbench::cli

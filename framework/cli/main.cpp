@@ -1,8 +1,6 @@
 // hystbench: benchmark optimizers on hysteresis-model identification.
 #include <iostream>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "framework/cli/commands.hpp"
 #include "framework/cluster/cluster.hpp"
@@ -22,17 +20,7 @@ int main(int argc, char** argv) {
 #else
   app.set_version_flag("--version", HYSTBENCH_VERSION);
 #endif
-  std::vector<std::pair<CLI::App*, hystbench::cli::Action>> commands;
-  for (auto add : {hystbench::cli::add_list_command, hystbench::cli::add_run_command,
-                   hystbench::cli::add_simulate_command, hystbench::cli::add_fit_command,
-                   hystbench::cli::add_compare_command, hystbench::cli::add_diagnose_command,
-                   hystbench::cli::add_discover_command, hystbench::cli::add_propose_command,
-                   hystbench::cli::add_report_command, hystbench::cli::add_rank_command,
-                   hystbench::cli::add_control_command, hystbench::cli::add_svr_command,
-                   hystbench::cli::add_track_command}) {
-    auto action = add(app);
-    commands.emplace_back(app.get_subcommands({}).back(), action);
-  }
+  const auto commands = hystbench::cli::add_all_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

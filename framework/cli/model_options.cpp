@@ -43,7 +43,7 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
 }
 
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
-  cmd->add_option("--data", o.data, "measurement CSV (columns t, u, y, optional segment)")
+  cmd->add_option("--data", o.data, "measurement CSV (columns t, u, y, optional segment) or MAT file (vectors t, u, y)")
       ->required();
   cmd->add_option("--columns", o.columns, "column names when they differ, e.g. t=t_s,u=u_N,y=y_m");
   cmd->add_option("--input-unit", o.input_unit,

@@ -108,7 +108,7 @@ Action add_simulate_command(CLI::App& app) {
       ->check(CLI::IsMember({"increment", "paper"}));
   cmd->add_option("--input-unit", o->input_unit, "unit of u, recorded for figure axes (e.g. V)");
   cmd->add_option("--output-unit", o->output_unit, "unit of y, recorded for figure axes (e.g. µm)");
-  cmd->add_option("--out", o->out, "output CSV (the truth file is written beside it)")->required();
+  cmd->add_option("--out", o->out, "output CSV, or MAT file (v7) when the name ends in .mat; the truth file is written beside it")->required();
   add_threads_option(cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {

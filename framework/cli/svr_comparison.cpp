@@ -10,7 +10,7 @@
 namespace hystbench::cli {
 
 Comparison compare_svr_model(const nlohmann::json& file, const std::string& path, const DataOptions& data,
-                             const OutputOptions& output, const CLI::App& cmd) {
+                             const OutputOptions& output, const CLI::App& cmd, const std::string& mat) {
   const SvrHammerstein model = SvrHammerstein::from_json(file, path);
   DataSource source = data.source();
   const Measurement m = source.load();
@@ -26,7 +26,8 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   const auto dir = output.prepare("metrics.json");
   return write_and_print_comparison(dir, source, model_data, model.simulate(m.u, m.y), model.describe(),
                                     model.describe() + " on " + data.data + " (free run from the first " +
-                                        std::to_string(model.lags().warmup()) + " measured samples)");
+                                        std::to_string(model.lags().warmup()) + " measured samples)",
+                                    mat);
 }
 
 }  // namespace hystbench::cli

@@ -16,6 +16,7 @@ namespace hystbench::cli {
 // record is scored unless the command was given --holdout. Prints the
 // headline errors; returns the comparison.
 Comparison compare_svr_model(const nlohmann::json& file, const std::string& path, const DataOptions& data,
-                             const OutputOptions& output, const CLI::App& cmd);
+                             const OutputOptions& output, const CLI::App& cmd,
+                             const std::string& mat = "");
 
 }  // namespace hystbench::cli

@@ -17,11 +17,12 @@ namespace hystbench::measurement_csv {
 struct Location {
   const std::string& file;
   std::size_t line = 0;  // 1-based physical line; 0 means the whole file
+  const char* unit = "line";  // what `line` counts: "sample" in a MAT file
 };
 
 [[noreturn]] inline void fail(const Location& at, const std::string& what) {
   std::string where = at.file;
-  if (at.line > 0) where += ", line " + std::to_string(at.line);
+  if (at.line > 0) where += ", " + std::string(at.unit) + " " + std::to_string(at.line);
   throw InputError(where + ": " + what);
 }
 

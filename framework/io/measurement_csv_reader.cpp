@@ -17,6 +17,8 @@
 #include "framework/core/error.hpp"
 #include "framework/io/measurement_csv_lines.hpp"
 #include "framework/io/measurement_csv_rows.hpp"
+#include "framework/io/mat_file.hpp"
+#include "framework/io/measurement_mat.hpp"
 
 namespace hystbench {
 namespace {
@@ -191,6 +193,7 @@ void read_row(const std::vector<std::string>& fields, const Header& h, const Loc
 }  // namespace
 
 Measurement read_measurement(const std::filesystem::path& path, const ColumnMap& columns) {
+  if (is_mat_file(path)) return read_measurement_mat(path, columns);
   return parse_measurement(read_text(path), path.string(), columns);
 }
 

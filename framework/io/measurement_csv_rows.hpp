@@ -23,6 +23,7 @@ struct Rows {
   std::vector<double> t, u, y;
   std::vector<std::string> segment;
   std::vector<std::size_t> line;
+  const char* unit = "line";  // what `line` counts: "sample" in a MAT file
   int time_digits = 0;
 };
 

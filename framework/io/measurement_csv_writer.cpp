@@ -15,7 +15,9 @@
 #include "framework/core/error.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/io/mat_file.hpp"
 #include "framework/io/measurement_csv_lines.hpp"
+#include "framework/io/measurement_mat.hpp"
 
 namespace hystbench {
 namespace {
@@ -66,6 +68,7 @@ void write_measurement(const std::filesystem::path& path, const Measurement& m,
                        const std::vector<std::string>& comments) {
   const std::string file = path.string();
   check_writable(m, file);
+  if (has_mat_extension(path)) return write_measurement_mat(path, m);
   const bool segments = !m.segment.empty();
   std::string out = comment_lines(comments);
   out += segments ? "t,u,y,segment\n" : "t,u,y\n";

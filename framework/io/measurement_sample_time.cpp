@@ -20,9 +20,9 @@ namespace {
 void check_increasing(const Rows& rows, const std::string& file, const std::string& column) {
   for (std::size_t i = 1; i < rows.t.size(); ++i) {
     if (rows.t[i] <= rows.t[i - 1])
-      fail({file, rows.line[i]}, column,
+      fail({file, rows.line[i], rows.unit}, column,
            "time " + number_text(rows.t[i]) + " is not after the previous row's " +
-               number_text(rows.t[i - 1]) + " (line " + std::to_string(rows.line[i - 1]) +
+               number_text(rows.t[i - 1]) + " (" + rows.unit + " " + std::to_string(rows.line[i - 1]) +
                "); time must strictly increase (sort the rows or remove the duplicate)");
   }
 }
@@ -48,9 +48,9 @@ void check_even_steps(const Rows& rows, double dt, const std::string& file,
     }
   }
   if (worst == 0) return;
-  fail({file, rows.line[worst]}, column,
-       "the time step " + number_text(rows.t[worst] - rows.t[worst - 1]) + " from line " +
-           std::to_string(rows.line[worst - 1]) + " differs from the sample time " +
+  fail({file, rows.line[worst], rows.unit}, column,
+       "the time step " + number_text(rows.t[worst] - rows.t[worst - 1]) + " from " +
+           rows.unit + " " + std::to_string(rows.line[worst - 1]) + " differs from the sample time " +
            number_text(dt) + " (first to last time over the sample count); samples must be " +
            "evenly spaced. Is a row missing? If the times are rounded, write more digits");
 }
@@ -62,7 +62,7 @@ Measurement to_measurement(Rows& rows, const Header& h, const std::string& file)
   if (rows.t.empty())
     fail({file, h.line}, "the file has a header but no data rows; add one row per sample");
   if (rows.t.size() < 2)
-    fail({file, rows.line[0]}, "only one sample; at least two are needed to infer the sample time");
+    fail({file, rows.line[0], rows.unit}, "only one sample; at least two are needed to infer the sample time");
   check_increasing(rows, file, column);
   const std::size_t n = rows.t.size();
   const double dt = (rows.t.back() - rows.t.front()) / static_cast<double>(n - 1);

@@ -1,0 +1,95 @@
+// hystbench._core: the commands of the `hystbench` program run in process,
+// and the readers a notebook needs. The Python side (hystbench/__init__.py)
+// turns the files the commands write into Python objects.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "framework/cli/commands.hpp"
+#include "framework/core/error.hpp"
+#include "framework/io/mat_file.hpp"
+#include "framework/io/measurement.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// Sends std::cout (and std::cerr: progress lines) into one string for the
+// life of a command, unless the caller wants to see them.
+class CapturedOutput {
+ public:
+  explicit CapturedOutput(bool echo) : echo_(echo) {
+    if (echo_) return;
+    out_ = std::cout.rdbuf(text_.rdbuf());
+    err_ = std::cerr.rdbuf(text_.rdbuf());
+  }
+  ~CapturedOutput() {
+    if (echo_) return;
+    std::cout.rdbuf(out_);
+    std::cerr.rdbuf(err_);
+  }
+  std::string text() const { return text_.str(); }
+
+ private:
+  bool echo_;
+  std::ostringstream text_;
+  std::streambuf* out_ = nullptr;
+  std::streambuf* err_ = nullptr;
+};
+
+// Runs `hystbench ARGS...`; returns what it printed. Bad input raises
+// InputError (a ValueError) with the program's one-line message.
+std::string run_command(const std::vector<std::string>& args, bool echo) {
+  CLI::App app{"hystbench"};
+  app.require_subcommand(1);
+  const auto commands = hystbench::cli::add_all_commands(app);
+  std::vector<std::string> words{"hystbench"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  CapturedOutput output(echo);
+  py::gil_scoped_release unlocked;
+  try {
+    app.parse(int(argv.size()), argv.data());
+  } catch (const CLI::ParseError& e) {
+    throw hystbench::InputError(e.what());
+  }
+  for (const auto& [command, action] : commands)
+    if (command->parsed()) action();
+  return output.text();
+}
+
+py::dict measurement_dict(const hystbench::Measurement& m) {
+  py::dict d;
+  d["t"] = m.t;
+  d["u"] = m.u;
+  d["y"] = m.y;
+  d["segment"] = m.segment;
+  d["sample_time"] = m.sample_time;
+  d["source"] = m.source;
+  return d;
+}
+
+py::dict read_measurement(const std::string& path, const std::string& columns) {
+  return measurement_dict(hystbench::read_measurement(path, hystbench::ColumnMap::parse(columns)));
+}
+
+Eigen::VectorXd read_mat_vector(const std::string& path, const std::string& name) {
+  return hystbench::MatReader(path).vector(name, name);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "hystbench's commands and readers, in process (use the hystbench package)";
+  py::register_exception<hystbench::InputError>(m, "InputError", PyExc_ValueError);
+  m.def("run_command", &run_command, py::arg("args"), py::arg("echo") = false);
+  m.def("read_measurement", &read_measurement, py::arg("path"), py::arg("columns") = "");
+  m.def("read_mat_vector", &read_mat_vector, py::arg("path"), py::arg("name"));
+  m.attr("version") = HYSTBENCH_VERSION;
+}
