@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <iostream>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,8 +44,11 @@ class CapturedOutput {
 };
 
 // Runs `hystbench ARGS...`; returns what it printed. Bad input raises
-// InputError (a ValueError) with the program's one-line message.
+// InputError (a ValueError) with the program's one-line message. One
+// command at a time: the output capture swaps the process's std::cout, and
+// plugin loading fills process-wide registries.
 std::string run_command(const std::vector<std::string>& args, bool echo) {
+  static std::mutex one_at_a_time;
   CLI::App app{"hystbench"};
   app.require_subcommand(1);
   const auto commands = hystbench::cli::add_all_commands(app);
@@ -52,10 +56,15 @@ std::string run_command(const std::vector<std::string>& args, bool echo) {
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
+  py::gil_scoped_release unlocked;  // before the lock: a waiting thread holds no GIL
+  const std::lock_guard<std::mutex> lock(one_at_a_time);
   CapturedOutput output(echo);
-  py::gil_scoped_release unlocked;
   try {
     app.parse(int(argv.size()), argv.data());
+  } catch (const CLI::Success&) {  // --help: that of the innermost command given
+    const CLI::App* asked = &app;
+    while (!asked->get_subcommands().empty()) asked = asked->get_subcommands().back();
+    return asked->help();
   } catch (const CLI::ParseError& e) {
     throw hystbench::InputError(e.what());
   }

@@ -109,6 +109,16 @@ TEST(IohExport, RowsKeepOnlyImprovementsAndEndAtTheLastEvaluation) {
   EXPECT_EQ(ioh_rows(t), (Rows{{1, 9.0}, {7, 5.0}, {20, 2.0}}));
 }
 
+TEST(IohExport, FailedTrialsAreLeftOutWithANote) {
+  ResultsFolder folder = read_results_folder(kTable1);
+  folder.trials[0].stop = StopReason::Failed;
+  folder.trials[0].message = "the model diverged";
+  const IohExport exported = export_ioh({folder});
+  EXPECT_EQ(exported.runs, 119);
+  ASSERT_EQ(exported.skipped.size(), 1u);
+  EXPECT_TRUE(contains(exported.skipped[0], "failed (the model diverged)")) << exported.skipped[0];
+}
+
 TEST(IohExport, NamesBecomeFileNameParts) {
   EXPECT_EQ(ioh_safe_name("hammerstein(default.csv)"), "hammerstein_default.csv");
   EXPECT_EQ(ioh_safe_name("control(avc_beam, vss_fxlms)"), "control_avc_beam_vss_fxlms");
@@ -137,6 +147,14 @@ TEST(IohExport, RefusesToOverwriteAndNonResultsFolders) {
   const auto again = hystbench("export ioh " + kTable1.string() + " --out " + out.string());
   EXPECT_EQ(again.code, 2);
   EXPECT_TRUE(contains(again.output, "already holds an IOHprofiler export")) << again.output;
+  // --force replaces the whole earlier export: no run of another folder stays.
+  const auto fair = kSourceRoot / "results/paper/mede_table1_fair";
+  ASSERT_EQ(hystbench("export ioh " + fair.string() + " --out " + out.string()).code, 2);
+  ASSERT_EQ(hystbench("export ioh " + fair.string() + " --out " + out.string() + " --force").code, 0);
+  const auto meta = nlohmann::json::parse(
+      test_support::read(out / "DE" / "IOHprofiler_f1_hammerstein_default.csv.json"));
+  EXPECT_EQ(meta["scenarios"][0]["runs"][0]["best"]["y"].get<double>(),
+            trials_by_label(fair).at("DE").front().best);
   const auto not_results = hystbench("export ioh " + tmp.path().string() + " --out " +
                                      (tmp.path() / "x").string());
   EXPECT_EQ(not_results.code, 2);

@@ -124,7 +124,7 @@ TEST(MatMeasurement, MatOptionMustNameAMatFile) {
   const auto r = hystbench("compare --data " + kDefault.string() + " --fit x.json --out " +
                            (tmp.path() / "c").string() + " --mat out.csv");
   EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(contains(r.output, "--mat out.csv: a MAT file's name ends in .mat")) << r.output;
+  EXPECT_TRUE(contains(r.output, "--mat: out.csv: a MAT file's name ends in .mat")) << r.output;
   EXPECT_FALSE(fs::exists(tmp.path() / "c"));
 }
 

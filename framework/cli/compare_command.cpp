@@ -83,7 +83,7 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("--mat", o->mat,
                   "also write t, u, y, the model output y_model and the residual as this MAT "
                   "file (v7)")
-      ->check(mat_file_name("--mat"));
+      ->check(mat_file_name());
   add_threads_option(cmd);
   add_output_options(cmd, o->output);
   auto load_plugins = add_plugin_option(*cmd);

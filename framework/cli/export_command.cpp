@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <set>
+#include <vector>
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/output_folder.hpp"
@@ -21,29 +22,54 @@ struct ExportOptions {
   bool force = false;
 };
 
+// The files of an earlier export in `out`: IOHanalyzer would mix its runs
+// with the new ones.
+std::vector<fs::path> earlier_export(const fs::path& out) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (!fs::is_directory(out, ec)) return found;
+  for (const auto& folder : fs::directory_iterator(out))
+    if (folder.is_directory())
+      for (const auto& e : fs::directory_iterator(folder.path())) {
+        const std::string name = e.path().filename().string();
+        if ((name.starts_with("IOHprofiler_") && name.ends_with(".json")) ||
+            (e.is_directory() && name.starts_with("data_f")))
+          found.push_back(e.path());
+      }
+  return found;
+}
+
+void replace_earlier_export(const fs::path& out, bool force) {
+  const auto earlier = earlier_export(out);
+  if (earlier.empty()) return;
+  if (!force)
+    throw InputError("--out " + out.string() + ": already holds an IOHprofiler export; pass "
+                     "--force to replace it, or choose another folder with --out");
+  for (const auto& p : earlier) fs::remove_all(p);
+}
+
 void export_ioh_folders(const ExportOptions& o) {
   std::vector<ResultsFolder> folders;
   for (const auto& f : o.folders) folders.push_back(read_results_folder(f));
   const IohExport exported = export_ioh(folders);
   if (exported.files.empty())
-    throw InputError("nothing to export: no trial of " + o.folders.front() +
-                     " has a finite fitness");
+    throw InputError("nothing to export: no trial of the folders given has a finite fitness");
   const fs::path out = o.out;
-  for (const auto& f : exported.files)
-    check_output_folder(out, f.path.string(), o.force, "an IOHprofiler export",
-                        "pass --force to replace it");
+  check_output_folder(out, exported.files.front().path.string(), o.force, "an IOHprofiler export",
+                      "pass --force to replace it");
+  replace_earlier_export(out, o.force);
   std::set<fs::path> algorithms;
   for (const auto& f : exported.files) {
     create_output_folder((out / f.path).parent_path());
     write_file_atomic(out / f.path, f.text);
     algorithms.insert(*f.path.begin());
   }
-  std::cout << "Exported " << exported.runs << " runs of " << algorithms.size()
-            << " algorithms to " << out.string() << " (IOHprofiler format).\n";
+  std::cout << "Exported " << exported.runs << (exported.runs == 1 ? " run" : " runs") << " of "
+            << algorithms.size() << (algorithms.size() == 1 ? " algorithm" : " algorithms")
+            << " to " << out.string() << " (IOHprofiler format).\n";
   for (const auto& s : exported.skipped) std::cout << "  skipped " << s << "\n";
-  std::cout << "For IOHanalyzer (Upload Data): cd " << out.string() << " && zip -r ../"
-            << (out.filename().empty() ? fs::path("export") : out.filename()).string()
-            << ".zip .\n";
+  std::cout << "For IOHanalyzer (Upload Data), zip the folder's contents, e.g. cd '"
+            << out.string() << "' && zip -r ../ioh_export.zip .\n";
 }
 
 }  // namespace
@@ -60,7 +86,9 @@ Action add_export_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   ioh->add_option("--out", o->out, "folder for the export (zip it to upload)")->required();
-  ioh->add_flag("--force", o->force, "replace an export already in the --out folder");
+  ioh->add_flag("--force", o->force,
+                "replace an export already in the --out folder (its algorithm folders' "
+                "IOHprofiler files)");
   auto load_plugins = add_plugin_option(*ioh);
   return [o, load_plugins] {
     load_plugins();

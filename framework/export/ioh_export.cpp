@@ -50,18 +50,21 @@ int dimension_of(const ResultsFolder& folder, const MergedResults& merged) {
   return 0;
 }
 
+// Slices of one experiment share its name and problem; the same file run on
+// other data is another group.
 std::vector<Group> group_by_experiment(const std::vector<ResultsFolder>& folders) {
-  std::map<std::string, std::vector<ResultsFolder>> by_name;
+  std::map<std::string, std::vector<ResultsFolder>> by_key;
   std::vector<std::string> order;
   for (const auto& f : folders) {
-    const std::string name = f.summary["experiment"].value("name", std::string());
-    if (!by_name.count(name)) order.push_back(name);
-    by_name[name].push_back(f);
+    const std::string key = f.summary["experiment"].value("name", std::string()) + "\n" +
+                            f.summary.value("problem", nlohmann::json()).dump();
+    if (!by_key.count(key)) order.push_back(key);
+    by_key[key].push_back(f);
   }
   std::map<std::string, int> ids;
   std::vector<Group> groups;
-  for (const auto& name : order) {
-    const auto& slices = by_name[name];
+  for (const auto& key : order) {
+    const auto& slices = by_key[key];
     MergedResults merged = merge_results(slices);
     const std::string function = ioh_safe_name(problem_name(slices.front()));
     const int id = ids.emplace(function, int(ids.size()) + 1).first->second;
@@ -108,8 +111,10 @@ void export_algorithm(const Group& g, const AlgorithmSpec& spec, const std::stri
   nlohmann::json runs = nlohmann::json::array();
   std::string data;
   for (const auto& t : trials) {
-    if (!std::isfinite(t.best)) {
-      out.skipped.push_back(name + " trial " + std::to_string(t.trial) + ": no finite fitness");
+    // As in the tables: a failed trial has no fitness to show.
+    if (t.failed() || !std::isfinite(t.best)) {
+      out.skipped.push_back(name + " trial " + std::to_string(t.trial) + ": " +
+                            (t.failed() ? "failed (" + t.message + ")" : "no finite fitness"));
       continue;
     }
     const auto rows = ioh_rows(t);
@@ -155,19 +160,28 @@ std::vector<std::pair<long, double>> ioh_rows(const TrialResult& trial) {
   return rows;
 }
 
+namespace {
+
+// The label, or label@experiment (then label@experiment-2, ...) when another
+// algorithm already has that name, as a file name, on this function.
+std::string unique_name(const Group& g, const std::string& label,
+                        std::set<std::pair<int, std::string>>& taken) {
+  std::string name = label;
+  for (int n = 1; !taken.emplace(g.function.id, ioh_safe_name(name)).second; ++n)
+    name = label + "@" + g.merged.experiment.name + (n > 1 ? "-" + std::to_string(n) : "");
+  return name;
+}
+
+}  // namespace
+
 IohExport export_ioh(const std::vector<ResultsFolder>& folders) {
   const auto groups = group_by_experiment(folders);
   IohExport out;
-  std::set<std::pair<int, std::string>> taken;  // (function, algorithm name)
+  std::set<std::pair<int, std::string>> taken;  // (function, folder name)
   for (const auto& g : groups)
     for (std::size_t a = 0; a < g.merged.experiment.algorithms.size(); ++a) {
       const auto& spec = g.merged.experiment.algorithms[a];
-      std::string name = spec.label;
-      if (!taken.emplace(g.function.id, name).second) {
-        name += "@" + g.merged.experiment.name;
-        taken.emplace(g.function.id, name);
-      }
-      export_algorithm(g, spec, name, g.merged.results[a], out);
+      export_algorithm(g, spec, unique_name(g, spec.label, taken), g.merged.results[a], out);
     }
   return out;
 }

@@ -24,12 +24,14 @@ struct IohFile {
 struct IohExport {
   std::vector<IohFile> files;
   long runs = 0;
-  // "DE trial 3: no finite fitness": trials IOHanalyzer cannot show.
+  // "DE trial 3: failed (...)": failed trials and those with no finite
+  // fitness, which the tables count as +inf and IOHanalyzer cannot show.
   std::vector<std::string> skipped;
 };
 
-// Folders of one experiment (slices of its trials) are merged first; the
-// same label in two experiments on one problem becomes "label@experiment".
+// Folders of one experiment (same name and problem: slices of its trials)
+// are merged first; the same label in two experiments on one problem
+// becomes "label@experiment".
 // InputError when folders of one experiment disagree (see merge_results).
 IohExport export_ioh(const std::vector<ResultsFolder>& folders);
 

@@ -59,7 +59,10 @@ std::vector<Step> parse_path(const std::string& path, const std::string& file) {
     const auto close = path.find(')', i);
     if (close == std::string::npos) bad();
     const std::string digits = path.substr(i + 1, close - i - 1);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) bad();
+    // 18 digits: beyond any array, and within std::stoul.
+    if (digits.empty() || digits.size() > 18 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      bad();
     const std::size_t k = std::stoul(digits);
     if (k == 0) bad();
     steps.push_back({"", k});
@@ -95,9 +98,14 @@ std::string not_numbers(matvar_t* v) {
     case MAT_C_CELL: return "is a cell array; save the numbers as a vector";
     case MAT_C_CHAR: return "is text, not numbers";
     case MAT_C_SPARSE: return "is a sparse matrix; save full(x)";
-    default:
+    case MAT_C_EMPTY: return "is empty; it needs one value per sample";
+    case MAT_C_FUNCTION: return "is a function handle, not numbers";
+    case MAT_C_OBJECT: case MAT_C_OPAQUE:
       return "is a MATLAB object (a timeseries or Simulink.SimulationOutput?); save its numbers "
              "as vectors or a struct (docs/formats.md#mat-files)";
+    default:
+      return v->isLogical ? "is logical (true/false); save double(x)"
+                          : "is of a class hystbench cannot read; save it as double";
   }
 }
 
@@ -158,6 +166,9 @@ std::vector<std::string> rows_of(const matvar_t* v) {
 struct MatReader::Handle {
   mat_t* mat = nullptr;
   std::vector<std::string> variables;
+  ~Handle() {
+    if (mat) Mat_Close(mat);
+  }
 };
 
 bool has_mat_extension(const fs::path& path) {
@@ -174,30 +185,22 @@ bool is_mat_file(const fs::path& path) {
   return in.gcount() == 6 && std::string(head, 6) == "MATLAB";
 }
 
-MatReader::MatReader(const fs::path& path) : name_(path.string()), handle_(new Handle) {
+MatReader::MatReader(const fs::path& path)
+    : name_(path.string()), handle_(std::make_unique<Handle>()) {
   silence_matio();
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    delete handle_;
+  if (!fs::is_regular_file(path, ec))
     throw InputError(name_ + ": file not found; check the path (a relative path starts at the "
                              "current folder)");
-  }
   handle_->mat = Mat_Open(name_.c_str(), MAT_ACC_RDONLY);
-  if (handle_->mat == nullptr) {
-    delete handle_;
+  if (handle_->mat == nullptr)
     throw InputError(name_ + ": not a MAT file that can be read (MATLAB v5, v7 or v7.3 expected); "
                              "save it again with save(file, '-v7'), or give a CSV measurement");
-  }
-  while (matvar_t* v = Mat_VarReadNextInfo(handle_->mat)) {
+  while (VarPtr v{Mat_VarReadNextInfo(handle_->mat)})
     if (v->name) handle_->variables.emplace_back(v->name);
-    Mat_VarFree(v);
-  }
 }
 
-MatReader::~MatReader() {
-  Mat_Close(handle_->mat);
-  delete handle_;
-}
+MatReader::~MatReader() = default;
 
 bool MatReader::has(const std::string& path) const {
   const auto steps = parse_path(path, name_);
@@ -226,6 +229,7 @@ matvar_t* walk(matvar_t* top, const std::vector<Step>& steps, const std::string&
              std::to_string(step.element));
       if (v->class_type == MAT_C_CELL) {
         v = Mat_VarGetCell(v, int(step.element - 1));
+        if (v == nullptr) fail("(" + std::to_string(step.element) + ") is empty");
         picked = false;
         element = 0;
       } else if (v->class_type == MAT_C_STRUCT) {
@@ -238,6 +242,7 @@ matvar_t* walk(matvar_t* top, const std::vector<Step>& steps, const std::string&
       continue;
     }
     if (v->class_type != MAT_C_STRUCT) fail("is not a struct; it has no field '" + step.name + "'");
+    if (element_count(v) == 0) fail("is an empty struct");
     if (element_count(v) > 1 && !picked)
       fail("is a " + shape(v) + " struct array; pick one element, e.g. " + at + "(1)." + step.name);
     matvar_t* field = Mat_VarGetStructFieldByName(v, step.name.c_str(), element);
@@ -259,14 +264,19 @@ std::string variable_list(const std::vector<std::string>& names) {
 
 }  // namespace
 
-Eigen::VectorXd MatReader::vector(const std::string& path, const std::string& role) const {
+Eigen::VectorXd MatReader::vector(const std::string& path, const std::string& role,
+                                  int* digits) const {
   const auto steps = parse_path(path, name_);
-  VarPtr top(has(path) ? Mat_VarRead(handle_->mat, steps.front().name.c_str()) : nullptr);
-  if (!top)
+  if (!has(path))
     throw InputError(name_ + ": no variable '" + steps.front().name + "' (for " + role +
                      "); its variables are " + variable_list(handle_->variables) +
                      ". Tell which hold t, u and y with the --columns option, e.g. "
                      "--columns t=time,u=v_in,y=x_out (a struct field as rec.X.Data)");
+  VarPtr top(Mat_VarRead(handle_->mat, steps.front().name.c_str()));
+  if (!top)
+    throw InputError(name_ + ": the variable '" + steps.front().name + "' (for " + role +
+                     ") is there but cannot be read (a MATLAB class matio does not know, or a "
+                     "damaged file); save it again as double");
   const matvar_t* v = walk(top.get(), steps, path, name_);
   const std::string what = name_ + ": '" + path + "' (for " + role + ") ";
   if (!numeric(v)) throw InputError(what + not_numbers(const_cast<matvar_t*>(v)));
@@ -281,6 +291,8 @@ Eigen::VectorXd MatReader::vector(const std::string& path, const std::string& ro
   Eigen::VectorXd out(static_cast<Eigen::Index>(n));
   if (v->data == nullptr || !to_doubles(v, out))
     throw InputError(what + "holds numbers of a type hystbench cannot read; save it as double");
+  // Significant digits the stored numbers carry (the even-step check's tolerance).
+  if (digits) *digits = v->data_type == MAT_T_SINGLE ? 7 : 17;
   return out;
 }
 
@@ -310,9 +322,6 @@ std::optional<std::vector<std::string>> MatReader::labels(const std::string& pat
 
 namespace {
 
-struct FileCloser {
-  void operator()(mat_t* m) const { Mat_Close(m); }
-};
 
 void write_vector(mat_t* mat, const std::string& name, const Eigen::VectorXd& values,
                   matio_compression compression) {
@@ -352,12 +361,17 @@ void write_mat_file(const fs::path& path,
   const auto version = format == MatFormat::V73 ? MAT_FT_MAT73 : MAT_FT_MAT5;
   const auto compression = format == MatFormat::V7 ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE;
   try {
-    {
-      std::unique_ptr<mat_t, FileCloser> mat(Mat_CreateVer(tmp.string().c_str(), nullptr, version));
-      if (!mat) throw InputError("cannot create the file");
-      for (const auto& [name, values] : vectors) write_vector(mat.get(), name, values, compression);
-      for (const auto& [name, labels] : texts) write_texts(mat.get(), name, labels, compression);
+    mat_t* mat = Mat_CreateVer(tmp.string().c_str(), nullptr, version);
+    if (!mat) throw InputError("cannot create the file");
+    try {
+      for (const auto& [name, values] : vectors) write_vector(mat, name, values, compression);
+      for (const auto& [name, labels] : texts) write_texts(mat, name, labels, compression);
+    } catch (...) {
+      Mat_Close(mat);
+      throw;
     }
+    // Closing flushes (HDF5 writes on close): a failure is a failed write.
+    if (Mat_Close(mat) != 0) throw InputError("writing the file failed (disk full?)");
     std::error_code ec;
     fs::rename(tmp, path, ec);
     if (ec) throw InputError("cannot rename " + tmp.string() + " into place (" + ec.message() + ")");

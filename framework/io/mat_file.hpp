@@ -5,6 +5,7 @@
 // dSPACE ControlDesk hold them; writing stores named column vectors.
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,8 +34,10 @@ class MatReader {
   // The real numeric vector at `path` (a variable, then ".field" and "(k)",
   // k from 1, into structs). InputError naming the file and the path when it
   // is absent (listing what there is), not numeric, complex, or not a vector.
-  // `role` ("t", "u", ...) is said in the message.
-  Eigen::VectorXd vector(const std::string& path, const std::string& role) const;
+  // `role` ("t", "u", ...) is said in the message. `digits`, when given,
+  // gets the significant digits the stored numbers carry (7 for single).
+  Eigen::VectorXd vector(const std::string& path, const std::string& role,
+                         int* digits = nullptr) const;
   // Text labels at `path`: a cell array of text, a char matrix (a row per
   // label, trailing blanks dropped) or a numeric vector; nullopt when the
   // path names nothing.
@@ -45,7 +48,7 @@ class MatReader {
  private:
   struct Handle;
   std::string name_;
-  Handle* handle_;
+  std::unique_ptr<Handle> handle_;
 };
 
 // Writes column vectors (and text labels, as char matrices) as a MAT file,

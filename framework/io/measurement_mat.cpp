@@ -19,14 +19,13 @@ std::vector<double> checked(const Eigen::VectorXd& v, const std::string& file,
                             const std::string& column) {
   for (Eigen::Index i = 0; i < v.size(); ++i) {
     const std::size_t sample = std::size_t(i) + 1;
+    const std::string at = "variable '" + column + "': " + number_text(v[i]);
     if (!std::isfinite(v[i]))
-      fail({file, sample, "sample"}, column,
-           number_text(v[i]) + " is not a finite number (NaN and Inf are not allowed); fix or "
-                               "remove the sample");
+      fail({file, sample, "sample"},
+           at + " is not a finite number (NaN and Inf are not allowed); fix or remove the sample");
     if (std::abs(v[i]) > kLargestValue)
-      fail({file, sample, "sample"}, column,
-           number_text(v[i]) + " is too large: squared errors of values beyond 1e150 overflow; "
-                               "rescale the variable (other units)");
+      fail({file, sample, "sample"}, at + " is too large: squared errors of values beyond 1e150 "
+                                          "overflow; rescale the variable (other units)");
   }
   return {v.data(), v.data() + v.size()};
 }
@@ -46,8 +45,7 @@ Measurement read_measurement_mat(const std::filesystem::path& path, const Column
   const std::string& file = mat.name();
   measurement_csv::Rows rows;
   rows.unit = "sample";
-  rows.time_digits = 17;  // binary doubles: exact as stored
-  rows.t = checked(mat.vector(columns.t, "t"), file, columns.t);
+  rows.t = checked(mat.vector(columns.t, "t", &rows.time_digits), file, columns.t);
   rows.u = checked(mat.vector(columns.u, "u"), file, columns.u);
   check_length(rows.u.size(), rows.t.size(), file, columns.u, columns.t);
   rows.y = checked(mat.vector(columns.y, "y"), file, columns.y);

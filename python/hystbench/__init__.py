@@ -33,8 +33,8 @@ from ._core import read_measurement as _read_measurement
 from ._core import run_command as _run_command
 
 __all__ = ["InputError", "Measurement", "Fit", "Comparison", "Diagnosis", "Discovery", "Run",
-           "read_measurement", "fit", "simulate", "compare", "diagnose", "discover", "run",
-           "command", "version"]
+           "read_measurement", "read_mat_vector", "fit", "simulate", "compare", "diagnose",
+           "discover", "run", "command", "version"]
 __version__ = version
 
 
@@ -108,7 +108,9 @@ class Run:
 
 
 def command(*args: str, echo: bool = False) -> str:
-    """Runs ``hystbench ARGS...`` in process; returns what it printed."""
+    """Runs ``hystbench ARGS...`` in process; returns what it printed (with
+    ``echo=True`` it is printed instead, and "" returned). ``--help`` returns
+    the help text."""
     return _run_command([str(a) for a in args], echo)
 
 
@@ -177,9 +179,10 @@ def discover(data: str | os.PathLike, start: str, *, out: str | os.PathLike | No
 def run(experiment: str | os.PathLike, *, out: str | os.PathLike | None = None,
         echo: bool = False, **options: Any) -> Run:
     """`hystbench run EXPERIMENT` (trials=, seed=, threads=, ... as options)."""
+    if out is None:
+        options["force"] = True  # our own temporary folder
     with _folder(out) as folder:
-        _run_command(["run", str(experiment),
-                      *_flags(dict(options, out=folder, force=True if out is None else None))], echo)
+        _run_command(["run", str(experiment), *_flags(dict(options, out=folder))], echo)
         summary = _json(folder / "summary.json")
         with open(folder / "trials.jsonl", encoding="utf-8") as f:
             trials = [json.loads(line) for line in f if line.strip()]
@@ -191,11 +194,15 @@ def run(experiment: str | os.PathLike, *, out: str | os.PathLike | None = None,
 def _flags(options: dict[str, Any]) -> list[str]:
     words: list[str] = []
     for key, value in options.items():
-        if value is None or value is False:
-            continue
         flag = "--" + key.replace("_", "-")
-        if value is True:
-            words.append(flag)
+        if value is None:
+            continue
+        if isinstance(value, (bool, np.bool_)):
+            words += [flag] if value else []
+        elif key == "plugin":  # repeatable: one library each
+            paths = value if isinstance(value, (list, tuple)) else [value]
+            for path in paths:
+                words += [flag, str(path)]
         elif key == "columns":
             words += [flag, _columns_text(value)]
         elif isinstance(value, (list, tuple)):

@@ -115,6 +115,16 @@ class Commands(unittest.TestCase):
     def test_an_existing_folder_is_kept_without_force(self):
         with self.assertRaisesRegex(hb.InputError, "already holds"):
             hb.fit(DATA, "msd", out=self.dir / "fit", **QUICK_FIT)
+        first = hb.run(CORPUS / "good_experiment.json", out=self.dir / "run", trials=2)
+        with self.assertRaisesRegex(hb.InputError, "already holds"):
+            hb.run(CORPUS / "good_experiment.json", out=self.dir / "run", trials=2)
+        again = hb.run(CORPUS / "good_experiment.json", out=self.dir / "run", trials=2, force=True)
+        self.assertEqual(again.best("de"), first.best("de"))
+
+    def test_help_is_returned(self):
+        text = hb.command("fit", "--help")
+        self.assertIn("--model", text)
+        self.assertIn("--data", text)
 
 
 class Discover(unittest.TestCase):
