@@ -100,6 +100,20 @@ nlohmann::json run_entry(const TrialResult& t, const std::vector<std::pair<long,
           {"best", {{"evals", found_at}, {"y", t.best}, {"x", t.best_x}}}};
 }
 
+// The json IOHanalyzer reads first: one scenario, its .dat and its runs.
+nlohmann::json meta_data(const Function& f, const std::string& algorithm, const std::string& info,
+                         const fs::path& dat, nlohmann::json runs) {
+  return {{"version", kIohVersion},
+          {"suite", kSuite},
+          {"function_id", f.id},
+          {"function_name", f.name},
+          {"maximization", false},
+          {"algorithm", {{"name", algorithm}, {"info", info}}},
+          {"attributes", {"evaluations", "raw_y"}},
+          {"scenarios",
+           {{{"dimension", f.dimension}, {"path", dat.generic_string()}, {"runs", std::move(runs)}}}}};
+}
+
 // Adds the json and the .dat of one algorithm of one group.
 void export_algorithm(const Group& g, const AlgorithmSpec& spec, const std::string& name,
                       const std::vector<TrialResult>& trials, IohExport& out) {
@@ -123,16 +137,7 @@ void export_algorithm(const Group& g, const AlgorithmSpec& spec, const std::stri
   }
   if (runs.empty()) return;
   out.runs += long(runs.size());
-  const nlohmann::json meta = {
-      {"version", kIohVersion},
-      {"suite", kSuite},
-      {"function_id", f.id},
-      {"function_name", f.name},
-      {"maximization", false},
-      {"algorithm", {{"name", name}, {"info", parameters_text(spec)}}},
-      {"attributes", {"evaluations", "raw_y"}},
-      {"scenarios",
-       {{{"dimension", f.dimension}, {"path", dat.generic_string()}, {"runs", runs}}}}};
+  const nlohmann::json meta = meta_data(f, name, parameters_text(spec), dat, std::move(runs));
   const fs::path folder = ioh_safe_name(name);
   out.files.push_back({folder / ("IOHprofiler_" + stem + ".json"), meta.dump(2) + "\n"});
   out.files.push_back({folder / dat, data});
