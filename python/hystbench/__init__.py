@@ -179,10 +179,8 @@ def discover(data: str | os.PathLike, start: str, *, out: str | os.PathLike | No
 def run(experiment: str | os.PathLike, *, out: str | os.PathLike | None = None,
         echo: bool = False, **options: Any) -> Run:
     """`hystbench run EXPERIMENT` (trials=, seed=, threads=, ... as options)."""
-    if out is None:
-        options["force"] = True  # our own temporary folder
     with _folder(out) as folder:
-        _run_command(["run", str(experiment), *_flags(dict(options, out=folder))], echo)
+        _run(["run", str(experiment)], folder, out, echo, **options)
         summary = _json(folder / "summary.json")
         with open(folder / "trials.jsonl", encoding="utf-8") as f:
             trials = [json.loads(line) for line in f if line.strip()]
@@ -220,12 +218,14 @@ def _columns_text(columns: str | dict[str, str] | None) -> str:
     return columns
 
 
-def _run(name: str, folder: Path, out: str | os.PathLike | None, echo: bool,
+def _run(command: str | list[str], folder: Path, out: str | os.PathLike | None, echo: bool,
          **options: Any) -> None:
+    """Runs a command (its name, or name and positional arguments) into `folder`."""
     # A temporary folder of our own may be replaced; the caller's only with force=True.
     if out is None:
         options["force"] = True
-    _run_command([name, *_flags(dict(options, out=folder))], echo)
+    words = [command] if isinstance(command, str) else list(command)
+    _run_command([*words, *_flags(dict(options, out=folder))], echo)
 
 
 @contextlib.contextmanager
