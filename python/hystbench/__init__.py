@@ -97,13 +97,15 @@ class Discovery:
 
 @dataclasses.dataclass
 class Run:
-    """summary.json and trials.jsonl of `hystbench run`."""
+    """summary.json and trials.jsonl of `hystbench run`; the trials in the
+    order of algorithm and trial number (the file is in order of completion,
+    which differs from one run with threads to the next)."""
     summary: dict[str, Any]
     trials: list[dict[str, Any]]
     folder: Path | None
 
     def best(self, label: str) -> list[float]:
-        """The final best fitness of every trial of one algorithm."""
+        """The final best fitness of every trial of one algorithm, by trial."""
         return [t["best"] for t in self.trials if t["label"] == label]
 
 
@@ -184,6 +186,7 @@ def run(experiment: str | os.PathLike, *, out: str | os.PathLike | None = None,
         summary = _json(folder / "summary.json")
         with open(folder / "trials.jsonl", encoding="utf-8") as f:
             trials = [json.loads(line) for line in f if line.strip()]
+        trials.sort(key=lambda t: (t["algorithm_index"], t["trial"]))
     return Run(summary=summary, trials=trials, folder=_kept(out))
 
 
