@@ -1,7 +1,7 @@
 // Cost of `propose` (docs/discovery.md#proposing-a-missing-term): the term
 // library's columns through the seed chain and the forward regression, on
-// 12 000 samples of the planted rate-dependent gain, for libraries of 96
-// (degree 3) and 336 (degree 6) terms. The bound: under 10 s on
+// 12 000 samples of the planted rate-dependent gain, for libraries of 219
+// (degree 3) and 519 (degree 6) terms. The bound: under 10 s on
 // 2 cores for a few hundred terms.
 #include <benchmark/benchmark.h>
 

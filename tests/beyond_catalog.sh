@@ -9,7 +9,10 @@
 #     noise sd;
 #   - cubic stiffness: propose on a fitted msd ranks x³ first in the dynamics;
 #     discover --plugin puts the generated effect (msd with the force) in
-#     msd's place, with the same result.
+#     msd's place, with the same result;
+#   - a play operator beside the gain and a drive-dependent stiffness: propose
+#     on a fitted msd ranks play(v, 25 %) and |v|·x first, and says why it
+#     writes no effect for them.
 # benchmarks/beyond_catalog.sh runs the same at full size.
 set -euo pipefail
 build_dir=$1
@@ -70,4 +73,18 @@ discover_with_effect rate rate.csv "$seed_chain"
 grep -q "^  1\. dynamics: x³  " cubic.txt || fail "cubic_stiffness: the first proposal is not dynamics x³: $(cat cubic.txt)"
 build_effect cubic
 discover_with_effect cubic cubic.csv msd
-echo "beyond_catalog: both planted cases found, proposed and fitted"
+# A play operator beside the gain and a spring that stiffens with the drive:
+# terms of the library beyond one stage's signal, proposed with no effect
+# written (a generated effect has only the f(a)·g(a') form), and said so.
+for case in "parallel_play|static: play(v, 25 %)" "drive_stiffness|dynamics: |v|·x"; do
+  name=${case%%|*} term=${case#*|}
+  "$planted" "$name" "$name.csv" 4000
+  "$hystbench" fit --data "$name.csv" --model msd --out "$name-msd" >/dev/null
+  "$hystbench" propose --data "$name.csv" --fit "$name-msd/fit.json" --out "$name" > "$name.txt"
+  grep -qF "  1. $term  " "$name.txt" || fail "$name: the first proposal is not $term: $(cat "$name.txt")"
+  grep -q "^no effect written: the term .* write its effect by hand" "$name.txt" ||
+    fail "$name: propose does not say why no effect was written: $(cat "$name.txt")"
+  grep -q "No effect was written" "$name/proposals.md" || fail "$name: proposals.md does not say no effect was written"
+  [[ ! -e "$name/effect" ]] || fail "$name: an effect folder was written for a term without a generated form"
+done
+echo "beyond_catalog: every planted case found and proposed; the generated effects fitted"

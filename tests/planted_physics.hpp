@@ -3,7 +3,10 @@
 // for the purpose (no catalog effect is used):
 //
 //   static part   w = gain·u·(1 + rate_gain·|u'|)          a gain that grows with the drive rate
-//   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³ = w        a stiffness that grows with amplitude
+//                   + play_gain·P(u)                       and a play operator beside the gain: P of
+//                                                          radius play_radius·max|u|, from 0
+//   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³           a stiffness that grows with amplitude,
+//                   + drive_stiffness·|w|·x = w            and one that grows with the drive
 //   output        y = x + noise
 //
 // ω = 2π/period. The ODE is integrated by RK4 with 20 sub-steps per sample,
@@ -11,6 +14,7 @@
 // The drive is a multisine whose amplitude rises and falls, so that the
 // record holds small and large amplitudes at every frequency.
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -25,6 +29,9 @@ struct System {
   double period = 0.02;    // s
   double zeta = 0.15;
   double cubic = 0.0;      // per unit of x²
+  double play_gain = 0.0;
+  double play_radius = 0.25;      // share of max |u|
+  double drive_stiffness = 0.0;   // per unit of |w|
   double noise = 0.01;     // sd, units of y
 };
 
@@ -60,9 +67,18 @@ inline Measurement simulate(const System& s, const Eigen::VectorXd& u, double ts
     previous = u[k];
     w[k] = s.gain * u[k] * (1.0 + s.rate_gain * std::abs(rate));
   }
+  if (s.play_gain != 0.0) {
+    const double r = s.play_radius * u.cwiseAbs().maxCoeff();
+    double p = 0.0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      p = std::min(u[k] + r, std::max(u[k] - r, p));
+      w[k] += s.play_gain * p;
+    }
+  }
   const double omega = 2.0 * M_PI / s.period;
   const auto accel = [&](double x, double v, double drive) {
-    return omega * omega * (drive - x - s.cubic * x * x * x) - 2.0 * s.zeta * omega * v;
+    return omega * omega * (drive - x - s.cubic * x * x * x - s.drive_stiffness * std::abs(drive) * x) -
+           2.0 * s.zeta * omega * v;
   };
   constexpr int kSub = 20;
   const double h = ts / kSub;

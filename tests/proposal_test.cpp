@@ -4,6 +4,7 @@
 // (tests/planted_physics.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -80,35 +81,84 @@ TEST(ForwardRegression, HeldOutRowsRefuseAColumnThatOnlyFitsTheEstimationNoise) 
 
 TEST(TermLibrary, HoldsBothParitiesOfEveryPowerAtEveryStage) {
   const auto library = term_library(3);
-  EXPECT_EQ(library.size(), 96u);
-  EXPECT_EQ(term_library(6).size(), 336u);
+  // 24 terms of one signal and its rate for each of u, v, w, x, y; 3 play
+  // operators; 6 pairs of signals × 4 signal-or-rate choices × 4 parities.
+  EXPECT_EQ(library.size(), 5u * 24u + 3u + 96u);
+  EXPECT_EQ(term_library(6).size(), 5u * 84u + 3u + 96u);
+  EXPECT_EQ(term_library(1).size(), 5u * 4u + 3u);  // no products below degree 2
   int cubes = 0;
   for (const auto& t : library)
-    if (t.stage == TermStage::Dynamics && t.rate.power == 0 && t.signal.power == 3) {
+    if (t.stage == TermStage::Dynamics && t.factors.size() == 1 && !t.factors[0].rate && t.factors[0].power == 3) {
       ++cubes;
       EXPECT_TRUE(t.text() == "x³" || t.text() == "|x|³");
+      EXPECT_TRUE(t.of_one_signal());
     }
   EXPECT_EQ(cubes, 2);
-  const CandidateTerm odd_square{TermStage::Static, {2, true}, {1, false}};
+  const CandidateTerm odd_square{TermStage::Static, {{TermSignal::Drive, false, 2, true}, {TermSignal::Drive, true, 1, false}}};
   EXPECT_EQ(odd_square.text(), "v·|v|·|v'|");
-  EXPECT_DOUBLE_EQ(odd_square.value(-2.0, -3.0), -12.0);
-  EXPECT_DOUBLE_EQ((CandidateTerm{TermStage::Output, {3, false}, {}}.value(-2.0, 0.0)), 8.0);
+  EXPECT_EQ(odd_square.degree(), 3);
+  EXPECT_DOUBLE_EQ(odd_square.factors[0].value(-2.0) * odd_square.factors[1].value(-3.0), -12.0);
+  EXPECT_DOUBLE_EQ((TermFactor{TermSignal::Output, false, 3, false}.value(-2.0)), 8.0);
   EXPECT_EQ(rate_of(Eigen::Vector3d(1.0, 3.0, 2.0), 0.5), Eigen::Vector3d(0.0, 4.0, -2.0));  // none before the record
+}
+
+TEST(TermLibrary, ProductsAcrossTheChainEnterWhereTheirLaterSignalLives) {
+  const auto library = term_library(3);
+  const auto find = [&](const std::string& text) {
+    return std::find_if(library.begin(), library.end(), [&](const CandidateTerm& t) { return t.text() == text; });
+  };
+  ASSERT_NE(find("v·x'"), library.end());
+  EXPECT_EQ(find("v·x'")->stage, TermStage::Dynamics);
+  EXPECT_EQ(find("|w|·y")->stage, TermStage::Output);
+  EXPECT_EQ(find("v·w")->stage, TermStage::Static);
+  EXPECT_FALSE(find("v·x'")->of_one_signal());
+  EXPECT_FALSE(find("play(v, 25 %)")->of_one_signal());
+  EXPECT_TRUE(find("w³")->of_one_signal());  // the static block's output, its own signal
+  ASSERT_NE(find("play(v, 25 %)"), library.end());
+  EXPECT_EQ(find("play(v, 25 %)")->entry(), Model::Entry::Dynamics);
+}
+
+TEST(TermLibrary, PlayOperatorFollowsTheInputOnlyBeyondItsRadius) {
+  const Eigen::VectorXd a = (Eigen::VectorXd(7) << 0.0, 0.5, 1.5, 1.0, 0.25, -1.0, 0.0).finished();
+  const Eigen::VectorXd p = play_operator(a, 0.5);
+  // From 0: held until a passes 0.5 above, then a − 0.5; held on the way back
+  // until a passes 0.5 below, then a + 0.5.
+  const Eigen::VectorXd expected = (Eigen::VectorXd(7) << 0.0, 0.0, 1.0, 1.0, 0.75, -0.5, -0.5).finished();
+  EXPECT_EQ(p, expected);
 }
 
 TEST(EffectSource, NamesTheTermAndRefusesAForceWithoutMsd) {
   ProposedTerm t;
-  t.term = {TermStage::Static, {1, true}, {1, false}};
+  t.term = {TermStage::Static, {{TermSignal::Drive, false, 1, true}, {TermSignal::Drive, true, 1, false}}};
   t.coefficient = 0.002;
   const std::string source = proposed_effect_source(t, {"rate_gain", "data.csv", "hysteresis,msd"});
   EXPECT_NE(source.find("HYSTBENCH_EFFECT(RateGain)"), std::string::npos);
   EXPECT_NE(source.find("EffectStage::Nonlinearity"), std::string::npos);
   EXPECT_NE(source.find("-0.02, 0.02, 0"), std::string::npos);  // c within ten times the proposal
   EXPECT_NE(source.find("proposed from data"), std::string::npos);
-  t.term.stage = TermStage::Dynamics;
+  t.term = {TermStage::Dynamics, {{TermSignal::Resonance, false, 1, true}, {TermSignal::Resonance, true, 1, false}}};
   EXPECT_NE(proposed_effect_source(t, {"stiff", "data.csv", "msd"}).find("i.extends = \"msd\""),
             std::string::npos);
   EXPECT_THROW(proposed_effect_source(t, {"stiff", "data.csv", "hysteresis,arx"}), InputError);
+  ProposedTerm of_w = t;
+  of_w.term = {TermStage::Static, {{TermSignal::StaticOutput, false, 3, true}}};
+  const std::string w_source = proposed_effect_source(of_w, {"stiff_w", "data.csv", "hysteresis,msd"});
+  EXPECT_NE(w_source.find("const Eigen::VectorXd a = signal;"), std::string::npos);  // built from w itself
+  EXPECT_NE(w_source.find("c·w³"), std::string::npos);
+  ProposedTerm cross = t;
+  cross.term = {TermStage::Dynamics, {{TermSignal::Drive, false, 1, true}, {TermSignal::Resonance, false, 1, true}}};
+  EXPECT_THROW(
+      {
+        try {
+          proposed_effect_source(cross, {"stiff", "data.csv", "msd"});
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("v·x is not a power of one signal of the dynamics block"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
   EXPECT_THROW(check_effect_name("msd"), InputError);
   EXPECT_THROW(check_effect_name("Bad-Name"), InputError);
 }
@@ -145,8 +195,10 @@ TEST(Proposal, PlantedRateDependentGainIsProposedAtTheStaticBlockAndNothingElse)
   EXPECT_EQ(p.terms[0].term.text(), "v·|v'|");
   EXPECT_EQ(p.terms[0].term.stage, TermStage::Static);
   EXPECT_GT(p.terms[0].err, 0.9);
-  // The same term at the input is one column here (only the gain between): the static block is said.
-  EXPECT_EQ(p.terms[0].runner_up, "input: u·|u'|");
+  // The same term at the input, and of w = gain·v, is one column here (only
+  // the gain between): the static block's drive is said.
+  EXPECT_TRUE(p.terms[0].runner_up == "input: u·|u'|" || p.terms[0].runner_up == "static: w·|w'|")
+      << p.terms[0].runner_up;
   EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
   EXPECT_GT(p.rmse_heldout, 5.0 * s.noise);
 }
@@ -163,11 +215,37 @@ TEST(Proposal, PlantedCubicStiffnessIsProposedInsideTheDynamics) {
   EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
 }
 
+TEST(Proposal, PlantedPlayBesideTheGainIsProposedAsTheStateOfAPlayOperator) {
+  planted::System s;
+  s.play_gain = 0.2;  // radius 25 % of max |u|, one of the library's
+  const PlantedFit f = fit_planted(s, "msd");
+  const Proposal p = propose_terms(f.model, f.x, f.data);
+  ASSERT_FALSE(p.terms.empty());
+  EXPECT_EQ(p.terms[0].term.text(), "play(v, 25 %)");
+  EXPECT_EQ(p.terms[0].term.stage, TermStage::Static);
+  EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
+  EXPECT_GT(p.rmse_heldout, 3.0 * s.noise);
+}
+
+TEST(Proposal, PlantedDriveDependentStiffnessIsProposedAsAProductAcrossTheChain) {
+  planted::System s;
+  s.drive_stiffness = 0.03;
+  const PlantedFit f = fit_planted(s, "msd");
+  const Proposal p = propose_terms(f.model, f.x, f.data);
+  ASSERT_FALSE(p.terms.empty());
+  // w = gain·v here, so |v|·x and |w|·x are one column: the drive is said.
+  EXPECT_EQ(p.terms[0].term.text(), "|v|·x");
+  EXPECT_EQ(p.terms[0].term.stage, TermStage::Dynamics);
+  EXPECT_LT(p.terms[0].coefficient, 0.0);  // a restoring force
+  EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
+}
+
 TEST(Proposal, NothingIsProposedWhenTheModelIsRight) {
   planted::System s;  // no planted term: msd is the truth
   const PlantedFit f = fit_planted(s, "msd");
   const Proposal p = propose_terms(f.model, f.x, f.data);
-  EXPECT_TRUE(p.terms.empty()) << p.terms[0].term.text();
+  EXPECT_TRUE(p.terms.empty()) << p.terms[0].term.text() << ": held-out RMSE " << p.rmse_heldout << " -> "
+                               << p.terms[0].heldout_rmse;
 }
 
 }  // namespace

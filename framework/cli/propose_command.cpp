@@ -67,8 +67,7 @@ GeneratedEffect write_effect(const Proposal& p, const ProposeCommandOptions& o, 
     write_file_atomic(dir / "effect" / "CMakeLists.txt", proposed_effect_cmake(o.name));
     return {o.name, model_with(model, o.name, p.terms[0].term.stage == TermStage::Dynamics)};
   } catch (const InputError& e) {
-    std::cout << "no effect written: " << e.what() << "\n";
-    return {};
+    return {"", "", e.what()};
   }
 }
 
@@ -97,6 +96,7 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   write_file_atomic(dir / "proposals.json", out.dump(2) + "\n");
   write_file_atomic(dir / "proposals.md", proposal_markdown(p, source.file_name(), source.y_unit, effect));
   print_proposal(p, source.y_unit);
+  if (!effect.not_written.empty()) std::cout << "no effect written: " << effect.not_written << "\n";
   std::cout << "wrote " << (dir / "proposals.md").string() << " and proposals.json"
             << (effect.name.empty() ? "" : ", and effect/" + effect.name + ".cpp (fit it as --model " + effect.model + ")")
             << "\n";

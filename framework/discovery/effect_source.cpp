@@ -48,14 +48,16 @@ StageForm stage_form(TermStage stage) {
 // The physical unit of c: the powers of y and u, and seconds per rate.
 void unit_powers(const CandidateTerm& t, int& u_power, int& y_power, std::string& unit) {
   const StageForm f = stage_form(t.stage);
-  const int degree = t.signal.power + t.rate.power;
+  const int degree = t.degree();
   u_power = f.u_power;
   y_power = f.y_power;
-  if (t.stage == TermStage::Input || t.stage == TermStage::Static)
+  const TermSignal a = t.own_factor(false).signal;
+  if (a == TermSignal::Input || a == TermSignal::Drive)  // in units of u; w, x and y are in units of y
     u_power -= degree;
   else
     y_power -= degree;
-  unit = t.rate.power == 0 ? "" : t.rate.power == 1 ? "s" : "s^" + std::to_string(t.rate.power);
+  const int q = t.own_factor(true).power;
+  unit = q == 0 ? "" : q == 1 ? "s" : "s^" + std::to_string(q);
 }
 
 constexpr const char* kCommon = R"src(// Proposed from data by `hystbench propose`: the term @TERM@ at the @STAGE_NAME@ stage,
@@ -119,7 +121,7 @@ constexpr const char* kAdditive = R"src(
     if (!std::isfinite(c)) return false;
     if (c == 0.0) return true;  // neutral: the signal is left exactly as it was
     if (!(ctx.sample_time > 0.0) || !ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    const Eigen::VectorXd& a = *ctx.stage_input;
+    @A_DECL@
     double previous = a.size() ? a[0] : 0.0;  // no rate before the record
     for (Eigen::Index k = 0; k < signal.size(); ++k) {
       signal[k] += c * term(a[k], (a[k] - previous) / ctx.sample_time);
@@ -236,31 +238,43 @@ void check_effect_name(const std::string& name) {
 
 std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceContext& context) {
   check_effect_name(context.name);
+  if (!t.term.of_one_signal())
+    throw InputError("the term " + t.term.text() + " is not a power of one signal of the " +
+                     term_stage_name(t.term.stage) +
+                     " block and of its rate, the one form a generated effect has; write its effect by hand "
+                     "(docs/plugins.md#adding-a-physical-effect)");
   const bool force = t.term.stage == TermStage::Dynamics;
   if (force && !Model::parse(context.model).has("msd"))
-    throw InputError("propose: the term " + t.term.text() +
+    throw InputError("the term " + t.term.text() +
                      " is a force inside the dynamics, and the generated effect adds it to msd, which the model " +
                      context.model + " does not have; fit a model with msd, or write the effect by hand "
                      "(docs/plugins.md)");
-  const StageForm f = stage_form(t.term.stage);
+  StageForm f = stage_form(t.term.stage);
+  // A term of w, the static block's output so far, is built from the signal
+  // the effect is handed rather than from the stage input v.
+  const bool of_w = t.term.own_factor(false).signal == TermSignal::StaticOutput;
+  if (of_w) f.signal = "the static block's output before this effect (the signal it is handed)";
   std::string s = std::string(kCommon) + (force ? kForce : kAdditive);
   const bool from_input = t.term.stage == TermStage::Input || t.term.stage == TermStage::Static;
   const std::vector<std::pair<std::string, std::string>> keys = {
       {"@TERM@", t.term.text()},
       {"@STAGE_NAME@", term_stage_name(t.term.stage)},
       {"@STAGE@", f.stage},
-      {"@SYMBOL@", t.term.symbol()},
+      {"@SYMBOL@", t.term.own_factor(false).symbol()},
       {"@SIGNAL@", f.signal},
       {"@MODEL@", literal(context.model)},
       {"@DATA@", literal(context.data_name)},
       {"@SHARE@", format_number("%.3g", 100.0 * t.err)},
       {"@COEF@", format_number("%.6g", t.coefficient)},
       {"@SE@", format_number("%.2g", t.standard_error)},
-      {"@P@", std::to_string(t.term.signal.power)},
-      {"@P_ODD@", t.term.signal.odd ? "true" : "false"},
-      {"@Q@", std::to_string(t.term.rate.power)},
-      {"@Q_ODD@", t.term.rate.odd ? "true" : "false"},
-      {"@VIEW_SIGNAL@", from_input ? "the input u" : "the model output"},
+      {"@P@", std::to_string(t.term.own_factor(false).power)},
+      {"@P_ODD@", t.term.own_factor(false).odd ? "true" : "false"},
+      {"@Q@", std::to_string(t.term.own_factor(true).power)},
+      {"@Q_ODD@", t.term.own_factor(true).odd ? "true" : "false"},
+      {"@A_DECL@", of_w ? "const Eigen::VectorXd a = signal;  // w before the term"
+                        : "const Eigen::VectorXd& a = *ctx.stage_input;"},
+      {"@VIEW_SIGNAL@", of_w ? "the input u (the residual view has no w; u stands for it)"
+                        : from_input ? "the input u" : "the model output"},
       {"@VIEW_MEMBER@", from_input ? "u" : "y_model"},
       {"@INCLUDES@", force ? "#include <algorithm>\n#include <array>\n#include <numbers>\n\n#include \"problems/hammerstein/effects/biquad.hpp\""
                            : ""},

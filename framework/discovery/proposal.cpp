@@ -14,25 +14,13 @@ constexpr double kProbe = 1e-6;
 
 std::string term_key(const CandidateTerm& t) { return term_stage_name(t.stage) + ": " + t.text(); }
 
-// The chain's signals the terms are built from, and their rates.
-struct StageSignals {
-  std::vector<Eigen::VectorXd> signal, rate;  // by TermStage
-};
-
-StageSignals stage_signals(const ModelData& data, const Model::ChainSignals& chain) {
-  StageSignals s;
-  for (TermStage stage : {TermStage::Input, TermStage::Static, TermStage::Dynamics, TermStage::Output}) {
-    s.signal.push_back(stage_signal(stage, data, chain));
-    s.rate.push_back(rate_of(s.signal.back(), data.sample_time));
+// The product of the term's factors on every sample.
+Eigen::VectorXd term_values(const CandidateTerm& t, const ModelData& data, const Model::ChainSignals& chain) {
+  Eigen::VectorXd phi = Eigen::VectorXd::Ones(data.size());
+  for (const TermFactor& f : t.factors) {
+    const Eigen::VectorXd a = factor_signal(f, data, chain);
+    for (Eigen::Index k = 0; k < a.size(); ++k) phi[k] *= f.value(a[k]);
   }
-  return s;
-}
-
-Eigen::VectorXd term_values(const CandidateTerm& t, const StageSignals& s) {
-  const auto& a = s.signal[std::size_t(t.stage)];
-  const auto& r = s.rate[std::size_t(t.stage)];
-  Eigen::VectorXd phi(a.size());
-  for (Eigen::Index k = 0; k < a.size(); ++k) phi[k] = t.value(a[k], r[k]);
   return phi;
 }
 
@@ -44,9 +32,9 @@ double rms_over(const Eigen::VectorXd& v, const Eigen::VectorXd& mask) {
 // What the term, scaled to unit RMS on the estimation samples, changes in
 // the model output (linearised); `scale` receives that RMS (0: a zero column).
 Eigen::VectorXd output_change(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
-                              const CandidateTerm& t, const StageSignals& s, const Eigen::VectorXd& y_model,
-                              double& scale) {
-  Eigen::VectorXd phi = term_values(t, s);
+                              const CandidateTerm& t, const Model::ChainSignals& chain,
+                              const Eigen::VectorXd& y_model, double& scale) {
+  Eigen::VectorXd phi = term_values(t, data, chain);
   scale = rms_over(phi, data.estimation);
   if (!(scale > 0.0) || !std::isfinite(scale)) {
     scale = 0.0;
@@ -114,13 +102,12 @@ Columns regression_columns(const Model& model, const Eigen::VectorXd& x, const M
   if (!model.simulate_probed(x, data, y_model, Model::Entry::Output, nullptr, &chain))
     throw InputError("propose: the fitted model " + model.text() +
                      " diverges on these data; fit it to them first (hystbench fit)");
-  const StageSignals signals = stage_signals(data, chain);
   const Eigen::Index m = Eigen::Index(library.size());
   Columns c{Eigen::MatrixXd(data.size(), m), parameter_columns(model, x, data, y_model), Eigen::VectorXd(m),
             data.y - y_model};
 #pragma omp parallel for schedule(dynamic)
   for (Eigen::Index j = 0; j < m; ++j)
-    c.terms.col(j) = output_change(model, x, data, library[std::size_t(j)], signals, y_model, c.scale[j]);
+    c.terms.col(j) = output_change(model, x, data, library[std::size_t(j)], chain, y_model, c.scale[j]);
   return c;
 }
 
@@ -206,6 +193,22 @@ nlohmann::json to_json(const std::vector<StageLead>& leads) {
   return out;
 }
 
+namespace {
+
+nlohmann::json factors_json(const CandidateTerm& t) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const TermFactor& f : t.factors) {
+    TermFactor signal = f;
+    signal.rate = false;  // the signal's own symbol; "rate" says whether the factor is of its rate
+    nlohmann::json j = {{"signal", signal.symbol()}, {"rate", f.rate}, {"power", f.power}, {"odd", f.odd}};
+    if (f.signal == TermSignal::Play) j["radius"] = f.radius;
+    out.push_back(j);
+  }
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json Proposal::to_json() const {
   nlohmann::json terms_json = nlohmann::json::array();
   for (std::size_t i = 0; i < terms.size(); ++i) {
@@ -214,8 +217,7 @@ nlohmann::json Proposal::to_json() const {
                           {"stage", term_stage_name(t.term.stage)},
                           {"term", t.term.text()},
                           {"enters", entry_name(t.term.entry())},
-                          {"signal", {{"symbol", t.term.symbol()}, {"power", t.term.signal.power}, {"odd", t.term.signal.odd}}},
-                          {"rate", {{"power", t.term.rate.power}, {"odd", t.term.rate.odd}}},
+                          {"factors", factors_json(t.term)},
                           {"coefficient", number_or_null(t.coefficient)},
                           {"standard_error", number_or_null(t.standard_error)},
                           {"share_of_residual", number_or_null(t.err)},

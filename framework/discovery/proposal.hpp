@@ -18,7 +18,7 @@
 // credited only with what a refit of the model could not do. The terms are
 // chosen one at a time by the share of the residual they explain beyond
 // those already chosen; the choice stops when a further term no longer
-// lowers the BIC by 10 or no longer lowers the held-out residual RMS by 1 %
+// lowers the BIC by 10 or no longer lowers the held-out residual RMS by 2 %
 // (the held-out samples never enter the choice of columns). Each term's
 // coefficient comes from least squares on the chosen columns beside the
 // parameters' sensitivities.

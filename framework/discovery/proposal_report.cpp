@@ -36,6 +36,7 @@ std::string refused_text(const Proposal& p) {
 }
 
 std::string next_steps(const GeneratedEffect& e) {
+  if (!e.not_written.empty()) return "\n## The first term as an effect\n\nNo effect was written: " + e.not_written + ".\n";
   if (e.name.empty()) return "";
   return "\n## Trying the first term as an effect\n\n"
          "`effect/" + e.name + ".cpp` is the first term as an effect plugin, its coefficient `c` "

@@ -11,7 +11,8 @@ namespace hystbench {
 // The generated effect, when one was written: its name and the model to
 // fit with it (the fitted model with the effect added, or in place of msd).
 struct GeneratedEffect {
-  std::string name, model;
+  std::string name, model;  // empty when none was written
+  std::string not_written;  // why not, when there was a term to write
 };
 
 std::string proposal_markdown(const Proposal& p, const std::string& data_name, const std::string& y_unit,
