@@ -102,20 +102,42 @@ TEST(TermLibrary, HoldsBothParitiesOfEveryPowerAtEveryStage) {
   EXPECT_EQ(rate_of(Eigen::Vector3d(1.0, 3.0, 2.0), 0.5), Eigen::Vector3d(0.0, 4.0, -2.0));  // none before the record
 }
 
+// The library's term of that text; a failure (and a stand-in term) when there is none.
+CandidateTerm library_term(const std::vector<CandidateTerm>& library, const std::string& text) {
+  const auto t = std::find_if(library.begin(), library.end(), [&](const CandidateTerm& c) { return c.text() == text; });
+  if (t != library.end()) return *t;
+  ADD_FAILURE() << "no term " << text << " in the library";
+  return {};
+}
+
 TEST(TermLibrary, ProductsAcrossTheChainEnterWhereTheirLaterSignalLives) {
   const auto library = term_library(3);
-  const auto find = [&](const std::string& text) {
-    return std::find_if(library.begin(), library.end(), [&](const CandidateTerm& t) { return t.text() == text; });
-  };
-  ASSERT_NE(find("v·x'"), library.end());
-  EXPECT_EQ(find("v·x'")->stage, TermStage::Dynamics);
-  EXPECT_EQ(find("|w|·y")->stage, TermStage::Output);
-  EXPECT_EQ(find("v·w")->stage, TermStage::Static);
-  EXPECT_FALSE(find("v·x'")->of_one_signal());
-  EXPECT_FALSE(find("play(v, 25 %)")->of_one_signal());
-  EXPECT_TRUE(find("w³")->of_one_signal());  // the static block's output, its own signal
-  ASSERT_NE(find("play(v, 25 %)"), library.end());
-  EXPECT_EQ(find("play(v, 25 %)")->entry(), Model::Entry::Dynamics);
+  const auto find = [&](const std::string& text) { return library_term(library, text); };
+  EXPECT_EQ(find("v·x'").stage, TermStage::Dynamics);
+  EXPECT_EQ(find("|w|·y").stage, TermStage::Output);
+  EXPECT_EQ(find("v·w").stage, TermStage::Static);
+  EXPECT_FALSE(find("v·x'").of_one_signal());
+  EXPECT_FALSE(find("play(v, 25 %)").of_one_signal());
+  EXPECT_TRUE(find("w³").of_one_signal());  // the static block's output, its own signal
+  EXPECT_EQ(find("play(v, 25 %)").entry(), Model::Entry::Dynamics);
+}
+
+TEST(TermLibrary, FactorsAreBuiltFromTheChainsSignalsAndTheirRates) {
+  Measurement m;
+  m.t = Eigen::VectorXd::LinSpaced(5, 0.0, 2.0);
+  m.u = (Eigen::VectorXd(5) << 0.0, 1.0, 3.0, 2.0, -1.0).finished();
+  m.y = m.u;
+  m.sample_time = 0.5;
+  ModelData data(m, SignalScales{});
+  data.estimation << 1.0, 1.0, 1.0, 1.0, 0.0;  // the last sample held out
+  Model::ChainSignals chain;
+  chain.v = (Eigen::VectorXd(5) << 0.0, 2.0, 4.0, 2.0, -8.0).finished();
+  chain.w = chain.resonance = chain.x = chain.v;
+  EXPECT_EQ(factor_signal({TermSignal::Input, true, 1, true}, data, chain), rate_of(m.u, 0.5));
+  EXPECT_EQ(factor_signal({TermSignal::Drive, false, 1, true}, data, chain), chain.v);
+  // Radius 25 % of max |v| on the estimation samples (4, not the held-out 8): 1.
+  EXPECT_EQ(factor_signal({TermSignal::Play, false, 1, true, 0.25}, data, chain), play_operator(chain.v, 1.0));
+  EXPECT_EQ((TermFactor{TermSignal::Play, true, 1, true, 0.25}.symbol()), "play(v, 25 %)'");
 }
 
 TEST(TermLibrary, PlayOperatorFollowsTheInputOnlyBeyondItsRadius) {
@@ -145,6 +167,7 @@ TEST(EffectSource, NamesTheTermAndRefusesAForceWithoutMsd) {
   const std::string w_source = proposed_effect_source(of_w, {"stiff_w", "data.csv", "hysteresis,msd"});
   EXPECT_NE(w_source.find("const Eigen::VectorXd a = signal;"), std::string::npos);  // built from w itself
   EXPECT_NE(w_source.find("c·w³"), std::string::npos);
+  EXPECT_NE(w_source.find("-0.02, 0.02, 0, -2, 0, \"\""), std::string::npos);  // c in units of y⁻²
   ProposedTerm cross = t;
   cross.term = {TermStage::Dynamics, {{TermSignal::Drive, false, 1, true}, {TermSignal::Resonance, false, 1, true}}};
   EXPECT_THROW(

@@ -71,6 +71,12 @@ GeneratedEffect write_effect(const Proposal& p, const ProposeCommandOptions& o, 
   }
 }
 
+nlohmann::json effect_json(const GeneratedEffect& e) {
+  if (!e.not_written.empty()) return {{"not_written", e.not_written}};
+  if (e.name.empty()) return nullptr;
+  return {{"source", "effect/" + e.name + ".cpp"}, {"model", e.model}};
+}
+
 void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   check_options(o);
   const nlohmann::json file = read_json_file(o.from_fit, "fit file");
@@ -89,9 +95,7 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   nlohmann::json out = p.to_json();
   out["data"] = source.to_json();
   out["fit"] = o.from_fit;
-  out["effect"] = effect.name.empty() ? nlohmann::json(nullptr)
-                                      : nlohmann::json({{"source", "effect/" + effect.name + ".cpp"},
-                                                        {"model", effect.model}});
+  out["effect"] = effect_json(effect);
   out["provenance"] = provenance(1, 0);
   write_file_atomic(dir / "proposals.json", out.dump(2) + "\n");
   write_file_atomic(dir / "proposals.md", proposal_markdown(p, source.file_name(), source.y_unit, effect));
@@ -108,8 +112,8 @@ Action add_propose_command(CLI::App& app) {
   auto o = std::make_shared<ProposeCommandOptions>();
   auto* cmd = app.add_subcommand(
       "propose", "Propose the term a fitted model lacks when no catalog effect explains its residual: sparse "
-                 "(orthogonal forward) regression of the residual on powers and products of the model's own "
-                 "signals at each stage; writes proposals.json, proposals.md and the first term as an effect "
+                 "(orthogonal forward) regression of the residual on powers, play operators and products of the "
+                 "model's own signals, each entering where its signal lives; writes proposals.json, proposals.md and the first term as an effect "
                  "plugin (effect/NAME.cpp)");
   add_data_options(cmd, o->data);
   cmd->add_option("--fit", o->from_fit, "fit.json of the model to extend (hystbench fit, diagnose or discover)")

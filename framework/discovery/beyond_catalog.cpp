@@ -136,7 +136,7 @@ std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& d
     out += std::string(i ? "," : "") + " " + b.tried[i].first + " " +
            (std::isfinite(b.tried[i].second) ? pct(b.tried[i].second) : "–");
   out += ".\n\nThe missing physics may not be in the catalog. `hystbench propose` regresses the residual on "
-         "terms built from the model's own signals at each stage and writes the best as an effect plugin "
+         "powers, play operators and products of the model's own signals and writes the best as an effect plugin "
          "(docs/discovery.md, \"Proposing a missing term\"):\n\n"
          "```sh\nhystbench propose --data DATA --fit DIR/fit.json --out DIR/proposals\n```\n\n"
          "with DATA the measurement (" + data_name + ") and DIR this folder.\n\n";

@@ -33,21 +33,36 @@ struct StageForm {
   const char* stage;   // EffectStage enumerator
   const char* signal;  // the signal the term is built from
   int u_power, y_power;  // of c's physical unit, before the term's own powers
+  const char* a_decl;  // the declaration of that signal in apply()
+  const char* view_signal;  // what the residual signature builds the term from
+  const char* view_member;  // ... as a member of ResidualView
 };
 
-StageForm stage_form(TermStage stage) {
-  switch (stage) {
-    case TermStage::Input: return {"Input", "the input (the stage input)", 1, 0};
-    case TermStage::Static: return {"Nonlinearity", "the drive (the stage input)", 0, 1};
-    case TermStage::Dynamics: return {"Dynamics", "the resonance's own output (the force depends on the output it drives)", 0, 1};
-    case TermStage::Output: return {"Output", "the dynamics' output (the stage input)", 0, 1};
+constexpr const char* kStageInput = "const Eigen::VectorXd& a = *ctx.stage_input;";
+
+StageForm stage_form(const CandidateTerm& t) {
+  switch (t.stage) {
+    case TermStage::Input: return {"Input", "the input (the stage input)", 1, 0, kStageInput, "the input u", "u"};
+    case TermStage::Static:
+      // A term of w is built from the signal the effect is handed (the block's
+      // output so far), not from the stage input v; the residual view has no w.
+      if (t.own_factor(false).signal == TermSignal::StaticOutput)
+        return {"Nonlinearity", "the static block's output before this effect (the signal it is handed)", 0, 1,
+                "const Eigen::VectorXd a = signal;  // w before the term",
+                "the input u (the residual view has no w; u stands for it)", "u"};
+      return {"Nonlinearity", "the drive (the stage input)", 0, 1, kStageInput, "the input u", "u"};
+    case TermStage::Dynamics:
+      return {"Dynamics", "the resonance's own output (the force depends on the output it drives)", 0, 1,
+              kStageInput, "the model output", "y_model"};
+    case TermStage::Output:
+      return {"Output", "the dynamics' output (the stage input)", 0, 1, kStageInput, "the model output", "y_model"};
   }
-  return {"Output", "?", 0, 1};
+  return {"Output", "?", 0, 1, kStageInput, "the model output", "y_model"};
 }
 
 // The physical unit of c: the powers of y and u, and seconds per rate.
 void unit_powers(const CandidateTerm& t, int& u_power, int& y_power, std::string& unit) {
-  const StageForm f = stage_form(t.stage);
+  const StageForm f = stage_form(t);
   const int degree = t.degree();
   u_power = f.u_power;
   y_power = f.y_power;
@@ -236,46 +251,48 @@ void check_effect_name(const std::string& name) {
     throw InputError("--name '" + name + "': the catalog already has an effect of that name; choose another");
 }
 
-std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceContext& context) {
-  check_effect_name(context.name);
-  if (!t.term.of_one_signal())
-    throw InputError("the term " + t.term.text() + " is not a power of one signal of the " +
-                     term_stage_name(t.term.stage) +
+namespace {
+
+// The forms a generated effect has: a power of one signal of the term's
+// block and of its rate; a force needs msd to extend.
+void check_form(const CandidateTerm& t, const std::string& model) {
+  if (!t.of_one_signal())
+    throw InputError("the term " + t.text() + " is not a power of one signal of the " + term_stage_name(t.stage) +
                      " block and of its rate, the one form a generated effect has; write its effect by hand "
                      "(docs/plugins.md#adding-a-physical-effect)");
-  const bool force = t.term.stage == TermStage::Dynamics;
-  if (force && !Model::parse(context.model).has("msd"))
-    throw InputError("the term " + t.term.text() +
+  if (t.stage == TermStage::Dynamics && !Model::parse(model).has("msd"))
+    throw InputError("the term " + t.text() +
                      " is a force inside the dynamics, and the generated effect adds it to msd, which the model " +
-                     context.model + " does not have; fit a model with msd, or write the effect by hand "
-                     "(docs/plugins.md)");
-  StageForm f = stage_form(t.term.stage);
-  // A term of w, the static block's output so far, is built from the signal
-  // the effect is handed rather than from the stage input v.
-  const bool of_w = t.term.own_factor(false).signal == TermSignal::StaticOutput;
-  if (of_w) f.signal = "the static block's output before this effect (the signal it is handed)";
+                     model + " does not have; fit a model with msd, or write the effect by hand (docs/plugins.md)");
+}
+
+}  // namespace
+
+std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceContext& context) {
+  check_effect_name(context.name);
+  check_form(t.term, context.model);
+  const bool force = t.term.stage == TermStage::Dynamics;
+  const StageForm f = stage_form(t.term);
+  const TermFactor a = t.term.own_factor(false), rate = t.term.own_factor(true);
   std::string s = std::string(kCommon) + (force ? kForce : kAdditive);
-  const bool from_input = t.term.stage == TermStage::Input || t.term.stage == TermStage::Static;
   const std::vector<std::pair<std::string, std::string>> keys = {
       {"@TERM@", t.term.text()},
       {"@STAGE_NAME@", term_stage_name(t.term.stage)},
       {"@STAGE@", f.stage},
-      {"@SYMBOL@", t.term.own_factor(false).symbol()},
+      {"@SYMBOL@", a.symbol()},
       {"@SIGNAL@", f.signal},
       {"@MODEL@", literal(context.model)},
       {"@DATA@", literal(context.data_name)},
       {"@SHARE@", format_number("%.3g", 100.0 * t.err)},
       {"@COEF@", format_number("%.6g", t.coefficient)},
       {"@SE@", format_number("%.2g", t.standard_error)},
-      {"@P@", std::to_string(t.term.own_factor(false).power)},
-      {"@P_ODD@", t.term.own_factor(false).odd ? "true" : "false"},
-      {"@Q@", std::to_string(t.term.own_factor(true).power)},
-      {"@Q_ODD@", t.term.own_factor(true).odd ? "true" : "false"},
-      {"@A_DECL@", of_w ? "const Eigen::VectorXd a = signal;  // w before the term"
-                        : "const Eigen::VectorXd& a = *ctx.stage_input;"},
-      {"@VIEW_SIGNAL@", of_w ? "the input u (the residual view has no w; u stands for it)"
-                        : from_input ? "the input u" : "the model output"},
-      {"@VIEW_MEMBER@", from_input ? "u" : "y_model"},
+      {"@P@", std::to_string(a.power)},
+      {"@P_ODD@", a.odd ? "true" : "false"},
+      {"@Q@", std::to_string(rate.power)},
+      {"@Q_ODD@", rate.odd ? "true" : "false"},
+      {"@A_DECL@", f.a_decl},
+      {"@VIEW_SIGNAL@", f.view_signal},
+      {"@VIEW_MEMBER@", f.view_member},
       {"@INCLUDES@", force ? "#include <algorithm>\n#include <array>\n#include <numbers>\n\n#include \"problems/hammerstein/effects/biquad.hpp\""
                            : ""},
       {"@EXTENDS@", force ? "    i.extends = \"msd\";\n" : ""},

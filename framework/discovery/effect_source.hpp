@@ -7,6 +7,10 @@
 // The effect adds c·f(a)·g(a') where the proposal says the term enters:
 //   input, static, output   a = the stage input (u, v, or the dynamics'
 //                           output), added to the signal of that stage
+//   static, of w            a = the signal the effect is handed: the static
+//                           block's output so far (the effect is appended
+//                           to the block; a static effect added after it
+//                           acts on w + c·f(w)·g(w'))
 //   dynamics                a force inside the mass-spring-damper: the effect
 //                           extends msd (same period and zeta) and adds
 //                           c·f(x)·g(x') to its input, x its own output at
@@ -26,8 +30,10 @@ struct EffectSourceContext {
   std::string model;      // the fitted model's effects
 };
 
-// Throws InputError for a bad name, and for a dynamics term when the model
-// has no msd to extend (the message says which stages work without it).
+// Throws InputError for a bad name, for a term that is not a power of one
+// signal of its block and of its rate (a play operator, a product of two
+// signals: those effects are written by hand), and for a dynamics term when
+// the model has no msd to extend.
 std::string proposed_effect_source(const ProposedTerm& term, const EffectSourceContext& context);
 
 // The CMakeLists.txt that builds it as NAME.so with find_package(hystbench).

@@ -38,7 +38,7 @@ std::string refused_text(const Proposal& p) {
 std::string next_steps(const GeneratedEffect& e) {
   if (!e.not_written.empty()) return "\n## The first term as an effect\n\nNo effect was written: " + e.not_written + ".\n";
   if (e.name.empty()) return "";
-  return "\n## Trying the first term as an effect\n\n"
+  return "\n## The first term as an effect\n\n"
          "`effect/" + e.name + ".cpp` is the first term as an effect plugin, its coefficient `c` "
          "free between ten times the proposed value either way. Build it, then fit the model with it, "
          "or let discover refit it with the rest of the model (docs/plugins.md, \"Out of the tree: a "

@@ -90,8 +90,9 @@ double TermFactor::value(double a) const {
 }
 
 std::string TermFactor::symbol() const {
-  if (signal == TermSignal::Play) return "play(v, " + format_number("%g", 100.0 * radius) + " %)";
-  return std::string(row(signal).symbol) + (rate ? "'" : "");
+  const std::string prime = rate ? "'" : "";
+  if (signal == TermSignal::Play) return "play(v, " + format_number("%g", 100.0 * radius) + " %)" + prime;
+  return row(signal).symbol + prime;
 }
 
 std::string TermFactor::text() const {
@@ -171,7 +172,8 @@ Eigen::VectorXd factor_signal(const TermFactor& f, const ModelData& data, const 
     case TermSignal::Resonance: a = chain.resonance; break;
     case TermSignal::Output: a = chain.x; break;
     case TermSignal::Play: {
-      a = play_operator(chain.v, f.radius * chain.v.cwiseAbs().maxCoeff());
+      // The radius from the estimation samples only, which alone choose the terms.
+      a = play_operator(chain.v, f.radius * (chain.v.array().abs() * data.estimation.array()).maxCoeff());
       break;
     }
   }

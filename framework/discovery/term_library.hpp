@@ -18,8 +18,9 @@
 // candidates beside a² and a³. The library holds
 //   - every f(a)·g(a') of one signal and its rate, up to a total degree
 //     (default 3), for u, v, x, y and w;
-//   - the play operator on v at radii of 10, 25 and 50 % of max |v| (the
-//     state of a backlash-like hysteresis the chain lacks);
+//   - the play operator on v at radii of 10, 25 and 50 % of max |v| on the
+//     estimation samples (the state of a backlash-like hysteresis the chain
+//     lacks);
 //   - products of two signals of different places (v, w, x, y, or their
 //     rates), each to the first power, both parities: degree 2.
 #include <Eigen/Core>
@@ -44,8 +45,8 @@ enum class TermSignal { Input, Drive, StaticOutput, Resonance, Output, Play };
 struct TermFactor {
   TermSignal signal = TermSignal::Drive;
   bool rate = false;
-  int power = 1;
-  bool odd = true;
+  int power = 0;  // 0: the factor is 1
+  bool odd = false;
   double radius = 0.0;  // play operators: the radius as a share of max |v|
 
   double value(double a) const;
@@ -86,7 +87,8 @@ std::string entry_name(Model::Entry entry);
 
 // The signal a factor is built from, on every sample of one simulation
 // (normalised units), or its rate: u from the data, the rest from the
-// chain; the play operator's radius is a share of max |v| over the record.
+// chain; the play operator's radius is a share of max |v| over the
+// estimation samples.
 Eigen::VectorXd factor_signal(const TermFactor& f, const ModelData& data, const Model::ChainSignals& chain);
 
 // (a[k] − a[k−1]) / Ts, and 0 at k = 0 (no rate before the record).
