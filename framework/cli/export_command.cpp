@@ -55,8 +55,8 @@ void export_ioh_folders(const ExportOptions& o) {
   if (exported.files.empty())
     throw InputError("nothing to export: no trial of the folders given has a finite fitness");
   const fs::path out = o.out;
-  check_output_folder(out, exported.files.front().path.string(), o.force, "an IOHprofiler export",
-                      "pass --force to replace it");
+  // Any file of an earlier export counts, not one marker file: see earlier_export.
+  check_output_path(out);
   replace_earlier_export(out, o.force);
   std::set<fs::path> algorithms;
   for (const auto& f : exported.files) {

@@ -6,11 +6,15 @@ namespace hystbench {
 
 namespace fs = std::filesystem;
 
-void check_output_folder(const fs::path& dir, const std::string& marker, bool replace,
-                         const std::string& holds, const std::string& options) {
+void check_output_path(const fs::path& dir) {
   if (fs::exists(dir) && !fs::is_directory(dir))
     throw InputError("--out " + dir.string() + ": exists and is not a folder; choose another "
                      "folder with --out");
+}
+
+void check_output_folder(const fs::path& dir, const std::string& marker, bool replace,
+                         const std::string& holds, const std::string& options) {
+  check_output_path(dir);
   if (fs::exists(dir / marker) && !replace)
     throw InputError("--out " + dir.string() + ": already holds " + holds + "; " + options +
                      ", or choose another folder with --out");

@@ -6,6 +6,9 @@
 
 namespace hystbench {
 
+// Refuses a path that is a file (a folder or nothing is fine).
+void check_output_path(const std::filesystem::path& dir);
+
 // Refuses a path that is a file, and a folder that already holds `marker`
 // (what the command writes, e.g. "trials.jsonl") unless `replace` is set.
 // `holds` names that content and `options` how to go on, for the message:

@@ -42,9 +42,9 @@ constexpr std::array<SignalRow, 6> kSignals = {{{"u", TermStage::Input},
 
 const SignalRow& row(TermSignal signal) { return kSignals[std::size_t(signal)]; }
 
-// Both parities of |a|^p, odd first; nothing for p = 0.
+// Both parities of |a|^p, odd first; for p = 0 the factor 1.
 std::vector<TermFactor> parities(TermSignal signal, bool rate, int p) {
-  if (p == 0) return {};
+  if (p == 0) return {{signal, rate, 0, false}};
   return {{signal, rate, p, true}, {signal, rate, p, false}};
 }
 
@@ -53,11 +53,8 @@ std::vector<TermFactor> parities(TermSignal signal, bool rate, int p) {
 void single_signal_terms(TermSignal signal, TermStage stage, int degree, std::vector<CandidateTerm>& out) {
   for (int d = 1; d <= degree; ++d)
     for (int p = d; p >= 0; --p) {
-      std::vector<TermFactor> fs = parities(signal, false, p), gs = parities(signal, true, d - p);
-      if (fs.empty()) fs.push_back({signal, false, 0, false});
-      if (gs.empty()) gs.push_back({signal, true, 0, false});
-      for (const TermFactor& f : fs)
-        for (const TermFactor& g : gs) {
+      for (const TermFactor& f : parities(signal, false, p))
+        for (const TermFactor& g : parities(signal, true, d - p)) {
           CandidateTerm t{stage, {}};
           for (const TermFactor& h : {f, g})
             if (h.power > 0) t.factors.push_back(h);
