@@ -72,10 +72,12 @@ TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
 }
 
 // Blocks run a chunk of samples at a time, each effect carrying its state
-// into the next chunk: records shorter than a chunk, a whole number of
-// chunks and a partial last chunk give the same values.
+// into the next chunk, and sum each lane's SSE in Eigen's order as the
+// chunks pass: records shorter than one packet of Eigen's sum, than two,
+// than a chunk, a whole number of chunks and a partial last chunk (with a
+// packet and single samples left over) give the same values.
 TEST(EffectLanes, ChunkBoundariesDoNotChangeAValue) {
-  for (int samples : {700, 2048, 2049, 5000})
+  for (int samples : {5, 12, 23, 700, 2048, 2049, 5000})
     expect_bit_identical("hysteresis,asymmetry,msd,arx,creep,offset,drift", samples);
 }
 

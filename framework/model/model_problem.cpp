@@ -1,5 +1,7 @@
 #include "framework/model/model_problem.hpp"
 
+#include "framework/model/lane_squared_error.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -40,23 +42,12 @@ void ModelProblem::evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Ei
   // A partial block repeats its last candidate in the spare lanes.
   Eigen::MatrixXd block(X.rows(), kEffectLanes);
   for (Eigen::Index l = 0; l < kEffectLanes; ++l) block.col(l) = X.col(first + std::min(l, count - 1));
-  // Each lane's SSE is summed exactly as sse() sums it, from a vector of
-  // its own, so the two paths agree bit for bit. Each chunk of the block's
-  // output fills all of them while it is still in cache.
-  // Kept per thread: fresh vectors of this size come from the kernel, a
-  // page fault every 4 kB of every block (measured up to half the run time).
-  thread_local std::array<Eigen::VectorXd, kEffectLanes> lanes;
-  for (Eigen::Index l = 0; l < count; ++l) lanes[l].resize(data_.size());
+  LaneSquaredError sse(data_.y, data_.estimation);
   LaneMask ok;
-  model_.simulate_lanes(block, data_, ok, [&](Eigen::Index begin, std::span<const LaneVector> y) {
-    std::array<double*, kEffectLanes> out;
-    // Spare lanes are written to lane 0's vector and overwritten by it.
-    for (int l = 0; l < kEffectLanes; ++l) out[l] = lanes[l < count ? l : 0].data() + begin;
-    for (std::size_t k = 0; k < y.size(); ++k)
-      for (int l = kEffectLanes - 1; l >= 0; --l) out[l][k] = y[k][l];
-  });
+  model_.simulate_lanes(block, data_, ok, [&](Eigen::Index begin, std::span<const LaneVector> y) { sse.add(begin, y); });
+  const auto sums = sse.sums();
   for (Eigen::Index l = 0; l < count; ++l)
-    f[first + l] = ok[l] ? sse_of(lanes[l]) : std::numeric_limits<double>::infinity();
+    f[first + l] = ok[l] ? sums[std::size_t(l)] : std::numeric_limits<double>::infinity();
 }
 
 nlohmann::json ModelProblem::describe() const {

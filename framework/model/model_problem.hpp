@@ -33,6 +33,8 @@ class ModelProblem : public Problem {
   bool batched() const { return batched_; }
 
  private:
+  // Summed by Eigen; blocks copy its order (lane_squared_error.hpp): change
+  // the expression and both must change together.
   double sse_of(const Eigen::VectorXd& y) const;
   // Candidates first .. first + kEffectLanes - 1 (fewer at the end) into f.
   void evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::Index first,
