@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "framework/model/model_problem.hpp"
 
@@ -39,12 +42,12 @@ BENCHMARK_CAPTURE(BM_ModelFitness, gain, "none")->Arg(12000);
 BENCHMARK_CAPTURE(BM_ModelFitness, offset, "offset")->Arg(12000);
 BENCHMARK_CAPTURE(BM_ModelFitness, seed_chain, "hysteresis,asymmetry,msd,arx")->Arg(12000);
 
-// P candidates near a point where every effect of the seed chain is active.
-Eigen::MatrixXd seed_chain_candidates(const hystbench::Model& model, Eigen::Index p) {
+using Active = std::vector<std::pair<std::string, double>>;
+
+// P candidates near a point where every effect of the model is active.
+Eigen::MatrixXd active_candidates(const hystbench::Model& model, const Active& active, Eigen::Index p) {
   Eigen::VectorXd x = model.neutral();
   const auto names = model.parameter_names();
-  const std::vector<std::pair<std::string, double>> active = {
-      {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05}, {"msd.period", 0.02}, {"arx.a1", -0.5}, {"arx.b1", 0.1}};
   for (const auto& [name, value] : active)
     x[std::find(names.begin(), names.end(), name) - names.begin()] = value;
   Eigen::MatrixXd X = x.replicate(1, p);
@@ -52,22 +55,33 @@ Eigen::MatrixXd seed_chain_candidates(const hystbench::Model& model, Eigen::Inde
   return X;
 }
 
+const Active kSeedChain = {
+    {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05}, {"msd.period", 0.02}, {"arx.a1", -0.5}, {"arx.b1", 0.1}};
+// The Bouc-Wen oscillator in the seed chain's place of msd, with a loop.
+const Active kFeedbackChain = {{"hysteresis.A", 0.3},
+                               {"asymmetry.d2", 0.05},
+                               {"feedback_hysteresis.period", 0.02},
+                               {"feedback_hysteresis.alpha", 0.5},
+                               {"feedback_hysteresis.beta_gamma", 0.5},
+                               {"feedback_hysteresis.beta_delta", -0.2},
+                               {"arx.a1", -0.5},
+                               {"arx.b1", 0.1}};
+
 // One candidate at a time through ModelProblem::sse (the path of models
 // with an effect that has no batched form), or the whole batch through
 // evaluate() in blocks of kEffectLanes.
-template <bool kBatched>
-void BM_ModelProblem(benchmark::State& state) {
+void BM_ModelProblem(benchmark::State& state, bool batched, const char* model_list, const Active* active) {
   const Eigen::Index n = state.range(0), p = state.range(1);
   const int threads = int(state.range(2));
   const auto data = sine_data(n);
-  const auto model = hystbench::Model::parse("hysteresis,asymmetry,msd,arx");
+  const auto model = hystbench::Model::parse(model_list);
   const hystbench::ModelProblem problem(model, data);
-  const Eigen::MatrixXd X = seed_chain_candidates(model, p);
+  const Eigen::MatrixXd X = active_candidates(model, *active, p);
   Eigen::VectorXd f(p);
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   for (auto _ : state) {
-    if constexpr (kBatched) {
+    if (batched) {
       problem.evaluate(X, f);
     } else {
 #pragma omp parallel for schedule(dynamic)
@@ -87,7 +101,23 @@ void model_sizes(benchmark::internal::Benchmark* b) {
     for (const long n : {2000, 4000, 6000, 8000, 10000}) b->Args({n, 32, threads});
   b->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
-BENCHMARK_TEMPLATE(BM_ModelProblem, false)->Name("BM_ModelProblemScalar")->Apply(model_sizes);
-BENCHMARK_TEMPLATE(BM_ModelProblem, true)->Name("BM_ModelProblemBatched")->Apply(model_sizes);
+constexpr const char* kSeed = "hysteresis,asymmetry,msd,arx";
+constexpr const char* kFeedback = "hysteresis,asymmetry,feedback_hysteresis,arx";
+BENCHMARK_CAPTURE(BM_ModelProblem, scalar, false, kSeed, &kSeedChain)
+    ->Name("BM_ModelProblemScalar")
+    ->Apply(model_sizes);
+BENCHMARK_CAPTURE(BM_ModelProblem, batched, true, kSeed, &kSeedChain)
+    ->Name("BM_ModelProblemBatched")
+    ->Apply(model_sizes);
+// The Bouc-Wen oscillator's chain: blocks run the whole record at once.
+void feedback_size(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"N", "P", "threads"})->Args({4000, 32, 1})->UseRealTime()->Unit(benchmark::kMillisecond);
+}
+BENCHMARK_CAPTURE(BM_ModelProblem, feedback_scalar, false, kFeedback, &kFeedbackChain)
+    ->Name("BM_FeedbackModelProblemScalar")
+    ->Apply(feedback_size);
+BENCHMARK_CAPTURE(BM_ModelProblem, feedback_batched, true, kFeedback, &kFeedbackChain)
+    ->Name("BM_FeedbackModelProblemBatched")
+    ->Apply(feedback_size);
 
 }  // namespace

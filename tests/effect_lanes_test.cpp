@@ -48,8 +48,11 @@ Eigen::MatrixXd candidates(const Model& model, Eigen::Index n, std::uint64_t see
   return X;
 }
 
-void expect_bit_identical(const std::string& effects, int samples = 3000) {
-  const Model model = Model::parse(effects);
+void expect_bit_identical(const std::string& effects, int samples = 3000, InputHold hold = InputHold::Spline,
+                          int substeps = 0) {
+  Model model = Model::parse(effects);
+  model.set_input_hold(hold);
+  model.set_substeps(substeps);
   const ModelData data = record(samples);
   const ModelProblem problem(model, data);
   ASSERT_TRUE(problem.batched()) << effects;
@@ -77,8 +80,19 @@ TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
 // than a chunk, a whole number of chunks and a partial last chunk (with a
 // packet and single samples left over) give the same values.
 TEST(EffectLanes, ChunkBoundariesDoNotChangeAValue) {
-  for (int samples : {5, 12, 23, 700, 2048, 2049, 5000})
+  for (int samples : {1, 3, 5, 12, 23, 700, 2048, 2049, 5000})
     expect_bit_identical("hysteresis,asymmetry,msd,arx,creep,offset,drift", samples);
+}
+
+// The Bouc-Wen oscillator runs a block over the whole record: lanes with one
+// sub-step count together (a kinked sub-step redone per lane), lanes whose
+// stiffness asks for more sub-steps each alone; under every input hold.
+TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
+  for (const char* effects : {"feedback_hysteresis", "hysteresis,asymmetry,feedback_hysteresis,arx"})
+    for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh})
+      expect_bit_identical(effects, 600, hold);
+  expect_bit_identical("feedback_hysteresis", 600, InputHold::Spline, 3);
+  for (int samples : {1, 2, 3, 4}) expect_bit_identical("feedback_hysteresis", samples);
 }
 
 TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {

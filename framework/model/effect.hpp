@@ -76,6 +76,14 @@ struct SignalContext {
   InputHold hold = InputHold::Spline;
 };
 
+// What a block of candidates is run with (Model::simulate_lanes): the
+// SignalContext fields that are the same for every chunk.
+struct LaneContext {
+  double sample_time = 0.0;  // s
+  int substeps = 0;
+  InputHold hold = InputHold::Spline;
+};
+
 class Effect {
  public:
   virtual ~Effect() = default;
@@ -86,13 +94,14 @@ class Effect {
                      Eigen::Ref<Eigen::VectorXd> signal) const = 0;
 
   // Optional batched form (effect_lanes.hpp): kEffectLanes candidates at
-  // once, run a chunk of samples at a time. Over all chunks it must leave
+  // once, run a chunk of samples at a time (the whole record in one chunk
+  // when its LaneRun asks for it). Over all chunks it must leave
   // every lane exactly as apply() leaves it and clear ok[l] (here or in
   // finish()) where apply() would return false. A model all of whose
   // effects have it evaluates candidates in blocks; otherwise one at a time.
   // kernel_effect.hpp writes it from the effect's per-sample kernel.
   virtual bool has_lanes() const { return false; }
-  virtual std::unique_ptr<LaneRun> lane_run(const LaneParams& /*p*/, double /*sample_time*/,
+  virtual std::unique_ptr<LaneRun> lane_run(const LaneParams& /*p*/, const LaneContext& /*ctx*/,
                                             LaneMask& /*ok*/) const {
     return nullptr;
   }

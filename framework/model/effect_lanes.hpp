@@ -76,6 +76,9 @@ class LaneRun {
   virtual void finish(LaneMask& ok) const = 0;
   // Whether run() reads chunk.stage_input (the model copies it only then).
   virtual bool reads_stage_input() const { return true; }
+  // Whether run() needs the whole record as one chunk (an input spline
+  // through every sample); the model then runs the record in one chunk.
+  virtual bool whole_record() const { return false; }
 };
 
 // How an effect's parameters set it up, for one candidate.

@@ -46,8 +46,8 @@ class KernelEffect : public Effect {
   }
 
   bool has_lanes() const override { return true; }
-  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, double sample_time, LaneMask& ok) const override {
-    return std::make_unique<KernelLaneRun>(p, sample_time, ok);
+  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) const override {
+    return std::make_unique<KernelLaneRun>(p, ctx.sample_time, ok);
   }
 
   // In a stream, time is k·Ts at sample k, counted here; a record's time

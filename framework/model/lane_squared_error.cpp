@@ -4,6 +4,7 @@ namespace hystbench {
 
 LaneSquaredError::LaneSquaredError(const Eigen::VectorXd& y, const Eigen::VectorXd& mask)
     : y_(y.data()), mask_(mask.data()), size_(y.size()), sequential_(!kVectorised || y.size() < kPacket) {
+  eigen_assert(mask.size() == y.size());
   if (sequential_) return;
   end_of_pairs_ = y.size() / (2 * kPacket) * (2 * kPacket);
   end_of_packets_ = y.size() / kPacket * kPacket;
@@ -22,6 +23,7 @@ void LaneSquaredError::add_one(Eigen::Index k, LaneVector t) {
 
 void LaneSquaredError::add(Eigen::Index begin, std::span<const LaneVector> yhat) {
   const auto n = Eigen::Index(yhat.size());
+  eigen_assert(begin >= 0 && begin + n <= size_);
   Eigen::Index i = 0;
   if (!sequential_) {
     // Whole rounds of the running sums, kept in registers.

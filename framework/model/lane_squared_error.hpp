@@ -42,7 +42,9 @@ class LaneSquaredError {
                               std::declval<const Eigen::VectorXd&>().array());
   using Traits = Eigen::internal::redux_traits<Eigen::internal::scalar_sum_op<double, double>,
                                                Eigen::internal::redux_evaluator<Expression>>;
-  static constexpr bool kVectorised = Traits::Traversal == Eigen::LinearVectorizedTraversal;
+  static_assert(EIGEN_WORLD_VERSION == 3 && EIGEN_MAJOR_VERSION == 4,
+                "the order copied here is Eigen 3.4's: check Redux.h before building with another Eigen");
+  static constexpr bool kVectorised = int(Traits::Traversal) == int(Eigen::LinearVectorizedTraversal);
   using Packet = typename Traits::PacketType;
   static constexpr int kPacket = kVectorised ? Eigen::internal::unpacket_traits<Packet>::size : 1;
 
@@ -61,6 +63,8 @@ class LaneSquaredError {
   // sum keeps the whole record in running_[0].
   Eigen::Index end_of_pairs_ = 0, end_of_packets_ = 0;
   bool sequential_;
+  // Eigen starts each running sum from its first term, these from +0:
+  // the same, as no term is −0 (e·e ≥ +0, the mask 0 or 1).
   std::array<LaneVector, 2 * kPacket> running_{};
   std::array<LaneVector, kPacket> last_packet_{}, rest_{};
 };

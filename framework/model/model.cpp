@@ -299,15 +299,17 @@ void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const Mod
   for (const auto& e : entries_) {
     LaneParams p;
     for (int l = 0; l < kEffectLanes; ++l) p[l] = {X.col(l).data() + e.offset, e.info->params.size()};
-    runs.push_back(e.effect->lane_run(p, data.sample_time, ok));
+    runs.push_back(e.effect->lane_run(p, {data.sample_time, substeps_, input_hold_}, ok));
   }
+  const bool whole = std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r->whole_record(); });
   LaneVector gain{};
   for (int l = 0; l < kEffectLanes; ++l) gain[l] = X(0, l);
   const Eigen::Index n = data.size();
   const bool timed = data.t.size() == n;
-  std::vector<LaneVector> buffer(std::size_t(std::min(n, kLaneChunk))), stage_buffer(buffer.size());
-  for (Eigen::Index begin = 0; begin < n; begin += kLaneChunk) {
-    const auto m = std::size_t(std::min(kLaneChunk, n - begin));
+  const Eigen::Index chunk = whole ? std::max<Eigen::Index>(n, 1) : kLaneChunk;
+  std::vector<LaneVector> buffer(std::size_t(std::min(n, chunk))), stage_buffer(buffer.size());
+  for (Eigen::Index begin = 0; begin < n; begin += chunk) {
+    const auto m = std::size_t(std::min(chunk, n - begin));
     const std::span<LaneVector> y(buffer.data(), m), stage_input(stage_buffer.data(), m);
     run_chunk(entries_, runs, gain, data.u.data() + begin, y, stage_input,
               {begin, timed ? data.t.data() + begin : nullptr, stage_input});

@@ -31,6 +31,7 @@
 // kinks. The state starts at rest (y = y' = z = 0) and output 0 is 0; output
 // k + 1 is the state after the interval from sample k to k + 1.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -38,6 +39,7 @@
 
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
+#include "framework/model/input_hold.hpp"
 #include "framework/model/input_interpolation.hpp"
 
 namespace hystbench {
@@ -106,6 +108,11 @@ class FeedbackHysteresis : public Effect {
     return ctx.hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, ctx.hold, signal);
   }
 
+  bool has_lanes() const override { return true; }
+  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) const override {
+    return std::make_unique<Block>(p, ctx, ok);
+  }
+
   std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
     Coefficients c;
     if (!is_causal(ctx.hold)) return nullptr;  // the spline needs the whole record
@@ -116,19 +123,28 @@ class FeedbackHysteresis : public Effect {
   }
 
  private:
-  // The oscillator in time units of samples, and its integration steps.
+  // The oscillator in time units of samples, for one candidate (V = double)
+  // or a block of candidates (V = LaneVector).
+  template <class V>
+  struct Rates {
+    V w2, c1;     // ω² and 2ζω, ω = ωn·Ts rad per sample
+    V a, bg, bd;  // z' = a y' − bg |y'| z − bd y' |z|
+  };
+
+  // One candidate's oscillator and its integration steps.
   struct Coefficients {
-    double w2, c1;     // ω² and 2ζω, ω = ωn·Ts rad per sample
-    double a, bg, bd;  // z' = a y' − bg |y'| z − bd y' |z|
-    int sub;           // RK4 steps per sample
-    double h;          // their length, 1/sub
-    bool hysteretic;   // a != 0
+    Rates<double> r;
+    int sub;          // RK4 steps per sample
+    double h;         // their length, 1/sub
+    bool hysteretic;  // a != 0
   };
 
   // State (y, v = dy/dsample, z).
-  struct State {
-    double y = 0.0, v = 0.0, z = 0.0;
+  template <class V>
+  struct StateOf {
+    V y{}, v{}, z{};
   };
+  using State = StateOf<double>;
 
   static EffectSetup setup(std::span<const double> p, double ts, int substeps, Coefficients& c) {
     const double period = p[0], zeta = p[1], a = p[2], bg = p[3], bd = p[4];
@@ -149,28 +165,53 @@ class FeedbackHysteresis : public Effect {
       if (!(stiff <= double(kMaxSubsteps))) return EffectSetup::Invalid;
       sub = static_cast<int>(std::ceil(stiff));
     }
-    c = {ws * ws, 2.0 * zeta * ws, a, bg, bd, sub, 1.0 / sub, a != 0.0};
+    c = {{ws * ws, 2.0 * zeta * ws, a, bg, bd}, sub, 1.0 / sub, a != 0.0};
     return EffectSetup::Run;
   }
 
-  static double zdot(const Coefficients& c, double v, double z) {
-    return c.a * v - c.bg * std::abs(v) * z - c.bd * v * std::abs(z);
+  // The one-candidate and the block forms run these same operations, so
+  // each lane of a block is bit for bit its candidate.
+  template <class V>
+  static V zdot(const Rates<V>& c, V v, V z) {
+    return c.a * v - c.bg * lane_abs(v) * z - c.bd * v * lane_abs(z);
   }
 
   // One RK4 step of length `step` with the input at its start, middle and end.
-  static State rk4(const Coefficients& c, const State& s, double wa, double wm, double wb, double step) {
-    const double w2 = c.w2, c1 = c.c1;
+  template <class V>
+  static StateOf<V> rk4(const Rates<V>& c, const StateOf<V>& s, V wa, V wm, V wb, double step) {
+    const V w2 = c.w2, c1 = c.c1;
     const double half = 0.5 * step, sixth = step / 6.0;
-    const double k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(c, s.v, s.z);
-    const double y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
-    const double k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(c, v2, z2);
-    const double y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
-    const double k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(c, v3, z3);
-    const double y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
-    const double k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(c, v4, z4);
-    return State{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
-                 s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
-                 s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
+    const V k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(c, s.v, s.z);
+    const V y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
+    const V k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(c, v2, z2);
+    const V y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
+    const V k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(c, v3, z3);
+    const V y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
+    const V k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(c, v4, z4);
+    return StateOf<V>{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
+                      s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
+                      s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
+  }
+
+  // |v| and |z| have kinks where v or z changes sign (velocity reversals,
+  // zero crossings of the hysteretic force); RK4 loses its order over a
+  // step containing one (error O(h^2) per event).
+  static bool has_kink(const Coefficients& c, const State& x, const State& next) {
+    return c.hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0);
+  }
+
+  // Sub-step i from x again, split at the crossing (located by linear
+  // interpolation between x and the unsplit step's end, next).
+  template <class InputAt>
+  static State split_step(const Coefficients& c, const State& x, const State& next, int i, double w_start,
+                          double w_end, InputAt w_at) {
+    double theta = 1.0;
+    if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
+    if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
+    theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
+    auto at = [&](double frac) { return w_at((double(i) + frac) * c.h); };  // frac of this sub-step
+    const State mid = rk4(c.r, x, w_start, at(0.5 * theta), at(theta), theta * c.h);
+    return rk4(c.r, mid, at(theta), at(0.5 * (1.0 + theta)), w_end, (1.0 - theta) * c.h);
   }
 
   // Advances x over one sample interval, shared by the batch and streaming
@@ -179,20 +220,8 @@ class FeedbackHysteresis : public Effect {
   template <class InputAt>
   static void advance(const Coefficients& c, State& x, const double* wv, InputAt w_at) {
     for (int i = 0; i < c.sub; ++i) {
-      State next = rk4(c, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], c.h);
-      // |v| and |z| have kinks where v or z changes sign (velocity
-      // reversals, zero crossings of the hysteretic force); RK4 loses its
-      // order over a step containing one (error O(h^2) per event). Split
-      // the step at the crossing, located by linear interpolation.
-      if (c.hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0)) {
-        double theta = 1.0;
-        if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
-        if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
-        theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
-        auto at = [&](double frac) { return w_at((double(i) + frac) * c.h); };  // frac of this sub-step
-        const State mid = rk4(c, x, wv[2 * i], at(0.5 * theta), at(theta), theta * c.h);
-        next = rk4(c, mid, at(theta), at(0.5 * (1.0 + theta)), wv[2 * i + 2], (1.0 - theta) * c.h);
-      }
+      State next = rk4(c.r, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], c.h);
+      if (has_kink(c, x, next)) next = split_step(c, x, next, i, wv[2 * i], wv[2 * i + 2], w_at);
       x = next;
     }
   }
@@ -253,6 +282,67 @@ class FeedbackHysteresis : public Effect {
     return true;
   }
 
+  // A block of candidates, run over the whole record at once (the spline
+  // hold needs every sample before the first step). When the running lanes
+  // share one sub-step count they advance together, and a lane whose
+  // sub-step has a kink redoes it alone with split_step(); otherwise each
+  // lane runs the one-candidate form. Either way every lane is bit for bit
+  // what apply() gives its candidate.
+  class Block final : public LaneRun {
+   public:
+    Block(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) : hold_(ctx.hold) {
+      for (int l = 0; l < kEffectLanes; ++l) {
+        const EffectSetup s = setup(p[l], ctx.sample_time, ctx.substeps, c_[l]);
+        if (s == EffectSetup::Invalid) ok[l] = false;
+        running_[l] = s == EffectSetup::Run;
+        if (!running_[l]) continue;
+        if (sub_ == 0) sub_ = c_[l].sub;
+        shared_ = shared_ && c_[l].sub == sub_;
+      }
+    }
+
+    void run(std::span<LaneVector> signal, const LaneChunk& /*chunk*/) override {
+      if (sub_ == 0) return;  // no lane runs
+      if (shared_)
+        run_together(signal);
+      else
+        for (int l = 0; l < kEffectLanes; ++l)
+          if (running_[l]) run_alone(l, signal);
+    }
+
+    void finish(LaneMask& ok) const override {
+      for (int l = 0; l < kEffectLanes; ++l)
+        if (failed_[l]) ok[l] = false;
+    }
+    bool reads_stage_input() const override { return false; }
+    bool whole_record() const override { return true; }
+
+   private:
+    // Lane l through apply()'s own code.
+    void run_alone(int l, std::span<LaneVector> signal) {
+      Eigen::VectorXd x(Eigen::Index(signal.size()));
+      for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = signal[std::size_t(k)][l];
+      failed_[l] = !(hold_ == InputHold::Spline ? run_spline(c_[l], x) : run_held(c_[l], hold_, x));
+      for (Eigen::Index k = 0; k < x.size(); ++k) signal[std::size_t(k)][l] = x[k];
+    }
+
+    void run_together(std::span<LaneVector> signal);
+    void fit_splines(std::span<const LaneVector> input);
+    void fill_inputs(std::span<const LaneVector> input, Eigen::Index k, std::vector<LaneVector>& wv) const;
+    void redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i, Eigen::Index k,
+                    const std::vector<LaneVector>& wv, std::span<const LaneVector> input) const;
+    bool check_divergence(const StateOf<LaneVector>& x);
+
+    InputHold hold_;
+    std::array<Coefficients, kEffectLanes> c_{};
+    LaneMask running_{}, failed_{};
+    int sub_ = 0;         // the first running lane's sub-step count (0: none runs)
+    bool shared_ = true;  // every running lane has it
+    std::array<UniformCubicSpline, kEffectLanes> splines_;
+    std::vector<LaneVector> second_;  // the splines' second derivatives, interleaved
+    std::vector<UniformCubicSpline::Weights> weights_;
+  };
+
   // The streaming form's state: the oscillator and the previous input.
   struct Stream {
     State x;
@@ -275,6 +365,93 @@ class FeedbackHysteresis : public Effect {
     return diverged(st.x) ? std::numeric_limits<double>::quiet_NaN() : st.x.y;
   }
 };
+
+void FeedbackHysteresis::Block::run_together(std::span<LaneVector> signal) {
+  const std::vector<LaneVector> input(signal.begin(), signal.end());
+  if (hold_ == InputHold::Spline) fit_splines(input);
+  Rates<LaneVector> r{};
+  LaneBits keep{};  // lanes that do not run keep their signal
+  for (int l = 0; l < kEffectLanes; ++l) {
+    keep[l] = running_[l] ? 0 : -1;
+    if (!running_[l]) continue;
+    r.w2[l] = c_[l].r.w2, r.c1[l] = c_[l].r.c1, r.a[l] = c_[l].r.a, r.bg[l] = c_[l].r.bg, r.bd[l] = c_[l].r.bd;
+  }
+  const double h = 1.0 / sub_;
+  std::vector<LaneVector> wv(std::size_t(2 * sub_ + 1));
+  StateOf<LaneVector> x{};
+  signal[0] = keep ? signal[0] : LaneVector{};
+  for (Eigen::Index k = 0; k + 1 < Eigen::Index(signal.size()); ++k) {
+    fill_inputs(input, k, wv);
+    for (int i = 0; i < sub_; ++i) {
+      StateOf<LaneVector> next = rk4(r, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], h);
+      redo_kinks(x, next, i, k, wv, input);
+      x = next;
+    }
+    if (!check_divergence(x)) return;
+    signal[std::size_t(k + 1)] = keep ? signal[std::size_t(k + 1)] : x.y;
+  }
+}
+
+void FeedbackHysteresis::Block::fit_splines(std::span<const LaneVector> input) {
+  Eigen::VectorXd lane(Eigen::Index(input.size()));
+  second_.assign(input.size(), LaneVector{});
+  for (int l = 0; l < kEffectLanes; ++l) {
+    if (!running_[l]) continue;
+    for (Eigen::Index k = 0; k < lane.size(); ++k) lane[k] = input[std::size_t(k)][l];
+    splines_[l].fit(lane);
+    const Eigen::VectorXd& m = splines_[l].second_derivatives();
+    for (Eigen::Index k = 0; k < lane.size(); ++k) second_[std::size_t(k)][l] = m[k];
+  }
+  weights_.resize(std::size_t(2 * sub_ + 1));
+  for (int j = 0; j <= 2 * sub_; ++j)
+    weights_[std::size_t(j)] = UniformCubicSpline::weights(double(j) / double(2 * sub_));
+}
+
+// The input of every lane at the fractions advance() reads, computed as
+// UniformCubicSpline::value and held_value compute them.
+void FeedbackHysteresis::Block::fill_inputs(std::span<const LaneVector> input, Eigen::Index k,
+                                            std::vector<LaneVector>& wv) const {
+  const LaneVector w0 = input[std::size_t(k)], w1 = input[std::size_t(k + 1)];
+  for (int j = 0; j <= 2 * sub_; ++j) {
+    if (hold_ == InputHold::Spline) {
+      const UniformCubicSpline::Weights& c = weights_[std::size_t(j)];
+      const LaneVector m0 = second_[std::size_t(k)], m1 = second_[std::size_t(k + 1)];
+      wv[std::size_t(j)] = c.w0 * w0 + c.w1 * w1 + c.m0 * m0 + c.m1 * m1;
+    } else {
+      wv[std::size_t(j)] = hold_ == InputHold::Zoh ? w0 : w0 + double(j) / double(2 * sub_) * (w1 - w0);
+    }
+  }
+}
+
+void FeedbackHysteresis::Block::redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i,
+                                           Eigen::Index k, const std::vector<LaneVector>& wv,
+                                           std::span<const LaneVector> input) const {
+  const LaneBits crossing = (x.v * next.v < 0.0) | (x.z * next.z < 0.0);
+  for (int l = 0; l < kEffectLanes; ++l) {
+    if (!crossing[l] || !running_[l]) continue;
+    const State from{x.y[l], x.v[l], x.z[l]}, to{next.y[l], next.v[l], next.z[l]};
+    if (!has_kink(c_[l], from, to)) continue;
+    const auto w_at = [&](double s) {
+      if (hold_ == InputHold::Spline) return splines_[l].value(k, UniformCubicSpline::weights(s));
+      return held_value(hold_, input[std::size_t(k)][l], input[std::size_t(k + 1)][l], s);
+    };
+    const double w_start = wv[std::size_t(2 * i)][l], w_end = wv[std::size_t(2 * i + 2)][l];
+    const State redone = split_step(c_[l], from, to, i, w_start, w_end, w_at);
+    next.y[l] = redone.y, next.v[l] = redone.v, next.z[l] = redone.z;
+  }
+}
+
+// Marks the running lanes that diverged in this sample, as apply() stops
+// there; false once every running lane has.
+bool FeedbackHysteresis::Block::check_divergence(const StateOf<LaneVector>& x) {
+  bool any_left = false;
+  for (int l = 0; l < kEffectLanes; ++l) {
+    if (!running_[l] || failed_[l]) continue;
+    failed_[l] = diverged(State{x.y[l], x.v[l], x.z[l]});
+    any_left = any_left || !failed_[l];
+  }
+  return any_left;
+}
 
 }  // namespace
 }  // namespace hystbench
