@@ -95,6 +95,41 @@ TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
   for (int samples : {1, 2, 3, 4}) expect_bit_identical("feedback_hysteresis", samples);
 }
 
+// Fixed blocks for the oscillator's other paths: a lane stiff enough to need
+// more sub-steps (the block then runs each lane alone), an invalid lane, and
+// a block whose every lane diverges (the block stops early).
+TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
+  const Model model = Model::parse("feedback_hysteresis");
+  const ModelData data = record(600);
+  const ModelProblem problem(model, data);
+  const auto names = model.parameter_names();
+  const auto index = [&](const std::string& name) {
+    return int(std::find(names.begin(), names.end(), "feedback_hysteresis." + name) - names.begin());
+  };
+  Eigen::MatrixXd X = model.neutral().replicate(1, 16);
+  for (Eigen::Index j = 0; j < 16; ++j) {
+    X(index("period"), j) = 0.02 + 0.001 * double(j);
+    X(index("alpha"), j) = 0.5;
+    X(index("beta_gamma"), j) = 0.3;
+  }
+  // Stiffness 2π·Ts/period·√(1 + α)·(ζ + √(ζ² + 1)) ≈ 24 > 20 sub-steps.
+  X(index("period"), 1) = 0.005, X(index("zeta"), 1) = 2.0, X(index("alpha"), 1) = 4.0;
+  X(index("period"), 2) = -0.1;  // invalid
+  // The second block diverges in every lane: with β·γ < 0 < β·δ a positive
+  // z grows on every stroke, by up to e^(6|Δy|) when y falls.
+  for (Eigen::Index j = 8; j < 16; ++j) {
+    X(0, j) = 20.0;
+    X(index("beta_gamma"), j) = -3.0;
+    X(index("beta_delta"), j) = 3.0;
+  }
+  Eigen::VectorXd f(16);
+  problem.evaluate(X, f);
+  for (Eigen::Index j = 0; j < 16; ++j) EXPECT_EQ(f[j], problem.sse(X.col(j))) << "candidate " << j;
+  EXPECT_TRUE(std::isfinite(f[1]));
+  EXPECT_EQ(f[2], std::numeric_limits<double>::infinity());
+  for (Eigen::Index j = 8; j < 16; ++j) EXPECT_EQ(f[j], std::numeric_limits<double>::infinity()) << j;
+}
+
 TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
   const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
   const ModelData data = record();

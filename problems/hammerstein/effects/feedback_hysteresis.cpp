@@ -301,7 +301,8 @@ class FeedbackHysteresis : public Effect {
       }
     }
 
-    void run(std::span<LaneVector> signal, const LaneChunk& /*chunk*/) override {
+    void run(std::span<LaneVector> signal, const LaneChunk& chunk) override {
+      eigen_assert(chunk.begin == 0 && "whole_record(): the record comes in one chunk");
       if (sub_ == 0) return;  // no lane runs
       if (shared_)
         run_together(signal);
@@ -428,7 +429,7 @@ void FeedbackHysteresis::Block::redo_kinks(const StateOf<LaneVector>& x, StateOf
                                            std::span<const LaneVector> input) const {
   const LaneBits crossing = (x.v * next.v < 0.0) | (x.z * next.z < 0.0);
   for (int l = 0; l < kEffectLanes; ++l) {
-    if (!crossing[l] || !running_[l]) continue;
+    if (!crossing[l] || !running_[l] || failed_[l]) continue;
     const State from{x.y[l], x.v[l], x.z[l]}, to{next.y[l], next.v[l], next.z[l]};
     if (!has_kink(c_[l], from, to)) continue;
     const auto w_at = [&](double s) {
