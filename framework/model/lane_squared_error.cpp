@@ -25,11 +25,10 @@ void LaneSquaredError::add(Eigen::Index begin, std::span<const LaneVector> yhat)
   const auto n = Eigen::Index(yhat.size());
   eigen_assert(begin >= 0 && begin + n <= size_);
   Eigen::Index i = 0;
-  if (!sequential_) {
-    // Whole rounds of the running sums, kept in registers.
+  if (!sequential_ && begin % (2 * kPacket) == 0) {
+    // Whole rounds of the running sums, kept in registers (chunks start on
+    // a round; any other start goes sample by sample below).
     std::array<LaneVector, 2 * kPacket> sums = running_;
-    for (; i < n && (begin + i) % (2 * kPacket) != 0 && begin + i < end_of_pairs_; ++i)
-      sums[std::size_t((begin + i) % (2 * kPacket))] += term(begin + i, yhat[std::size_t(i)]);
     for (; i + 2 * kPacket <= n && begin + i + 2 * kPacket <= end_of_pairs_; i += 2 * kPacket)
       for (int j = 0; j < 2 * kPacket; ++j)
         sums[std::size_t(j)] += term(begin + i + j, yhat[std::size_t(i + j)]);

@@ -5,7 +5,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <array>
 #include <limits>
 
 namespace hystbench {
@@ -44,7 +43,8 @@ void ModelProblem::evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Ei
   for (Eigen::Index l = 0; l < kEffectLanes; ++l) block.col(l) = X.col(first + std::min(l, count - 1));
   LaneSquaredError sse(data_.y, data_.estimation);
   LaneMask ok;
-  model_.simulate_lanes(block, data_, ok, [&](Eigen::Index begin, std::span<const LaneVector> y) { sse.add(begin, y); });
+  model_.simulate_lanes(block, data_, ok,
+                        [&](Eigen::Index begin, std::span<const LaneVector> y) { sse.add(begin, y); });
   const auto sums = sse.sums();
   for (Eigen::Index l = 0; l < count; ++l)
     f[first + l] = ok[l] ? sums[std::size_t(l)] : std::numeric_limits<double>::infinity();

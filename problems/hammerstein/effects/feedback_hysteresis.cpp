@@ -105,7 +105,7 @@ class FeedbackHysteresis : public Effect {
     const EffectSetup s = setup(p, ctx.sample_time, ctx.substeps, c);
     if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
     if (signal.size() == 0) return true;
-    return ctx.hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, ctx.hold, signal);
+    return run_record(c, ctx.hold, signal);
   }
 
   bool has_lanes() const override { return true; }
@@ -238,6 +238,11 @@ class FeedbackHysteresis : public Effect {
     for (int j = 0; j <= 2 * c.sub; ++j) wv[j] = held_value(hold, w0, w1, double(j) / double(2 * c.sub));
   }
 
+  // One candidate's whole record, in place; false when it diverged.
+  static bool run_record(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
+    return hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, hold, signal);
+  }
+
   // Batch form with the spline through the whole record (not causal).
   static bool run_spline(const Coefficients& c, Eigen::Ref<Eigen::VectorXd> signal) {
     const int sub = c.sub;
@@ -323,7 +328,7 @@ class FeedbackHysteresis : public Effect {
     void run_alone(int l, std::span<LaneVector> signal) {
       Eigen::VectorXd x(Eigen::Index(signal.size()));
       for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = signal[std::size_t(k)][l];
-      failed_[l] = !(hold_ == InputHold::Spline ? run_spline(c_[l], x) : run_held(c_[l], hold_, x));
+      failed_[l] = !run_record(c_[l], hold_, x);
       for (Eigen::Index k = 0; k < x.size(); ++k) signal[std::size_t(k)][l] = x[k];
     }
 
