@@ -188,6 +188,16 @@ TEST(Completeness, WithoutANoiseEstimateNothingIsClaimed) {
   EXPECT_EQ(c.kind, "no_noise_estimate");
 }
 
+TEST(Completeness, AnErrorWellBelowTheNoiseEstimateMeansTheEstimateIsWrong) {
+  // Silverbox-like: 0.39 mV held out against a noise estimate of 1.01 mV.
+  const Completeness c = assess_completeness(errors(1.43, 0.39), where(1.01, 0.5, 0));
+  EXPECT_FALSE(c.complete);
+  EXPECT_EQ(c.kind, "noise_estimate_too_high");
+  EXPECT_NE(c.reason.find("held-out error is 0.386 σ"), std::string::npos) << c.reason;
+  // Just under the estimate, within the tolerance, is still at the floor.
+  EXPECT_TRUE(assess_completeness(errors(0.9, 0.95), where(1.0, 0.3, 1)).complete);
+}
+
 // A diagnosis whose candidates are given: (effect, ΔBIC, held-out RMSE).
 Diagnosis planted(const std::vector<std::tuple<std::string, double, double>>& candidates) {
   Diagnosis d{Model::parse("hysteresis"), Eigen::VectorXd(), errors(1.0, 1.0)};

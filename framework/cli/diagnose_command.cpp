@@ -27,7 +27,9 @@ struct DiagnoseCommandOptions {
 void print_diagnosis(const Diagnosis& d, const std::string& unit) {
   std::cout << "model " << d.model.text() << ": ";
   print_errors(d.errors, unit);
-  std::cout << "candidates (best first):\n";
+  std::cout << d.where.excitation.summary() << "\n";
+  std::cout << "candidates (best first; * significant: ΔBIC at or below the threshold and a lower held-out "
+               "error):\n";
   for (const auto& c : d.candidates)
     std::cout << "  " << (c.significant ? "* " : "  ") << c.effect << "  dBIC "
               << c.delta_bic << "  RMSE " << c.after.rmse_estimation << "  held-out "
@@ -59,7 +61,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   }
   DataSource source = o.data.source();
   const Measurement m = source.load();
-  const HoldoutSpec holdout = o.data.holdout_spec();
+  HoldoutSpec holdout = o.data.holdout_spec();
   StatusLine status(stderr_is_terminal());
   FitOptions fit = o.fit.fit_options();
   DiagnoseOptions options = o.diagnose.diagnose_options(fit, source);
@@ -67,6 +69,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   // meaning) or a model to fit first.
   std::optional<FitRecord> start;
   if (cmd.count("--fit")) start = FitRecord::read(o.from_fit);
+  if (start && !o.data.warmup) holdout.warmup = start->holdout.warmup;
   Model model = start ? start->model : Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
   const ModelData data =

@@ -9,6 +9,7 @@
 #include "framework/cli/number_range.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/ladder_report.hpp"
+#include "framework/discovery/separability.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
 #include "framework/io/truth_file.hpp"
@@ -42,6 +43,12 @@ void print_step(const Ladder& ladder, const std::string& unit) {
   print_errors(s.errors, unit);
   std::cout << "  verdict: " << d.verdict << (d.close_call.close ? " (close call)" : "")
             << "; complete: " << (d.completeness.complete ? "yes" : "no") << std::endl;
+}
+
+void print_what_the_record_cannot_tell(const Ladder& ladder) {
+  const ExcitationContent& e = ladder.diagnoses.back().where.excitation;
+  std::cout << e.summary() << "\n";
+  for (const auto& p : inseparable_pairs(ladder.final_effects(), e)) std::cout << p.sentence(e) << "\n";
 }
 
 void run_discover(DiscoverCommandOptions& o) {
@@ -91,6 +98,7 @@ void run_discover(DiscoverCommandOptions& o) {
   std::cout << "final model: " << ladder.steps.back().model.text() << "\n"
             << "complete: " << (ladder.completeness().complete ? "yes" : "no") << ". "
             << ladder.completeness().reason << "\n";
+  print_what_the_record_cannot_tell(ladder);
   if (!note.empty()) std::cout << note << "\n";
   std::cout << "wrote " << (dir / "ladder.md").string() << ", ladder.json and fit.json\n";
 }

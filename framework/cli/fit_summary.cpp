@@ -59,6 +59,8 @@ void print_comparison_headline(const Comparison& metrics, const std::string& uni
     std::cout << "  noise sigma not estimated (fewer than " << kNoiseFloorFewestSamples
               << " samples)\n";
   }
+  std::cout << "  " << metrics.excitation.summary() << "\n";
+  if (metrics.startup.dominates) std::cout << "  " << metrics.startup.sentence() << "\n";
 }
 
 }  // namespace hystbench::cli

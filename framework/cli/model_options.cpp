@@ -17,6 +17,12 @@ DataSource DataOptions::source() const {
   return s;
 }
 
+HoldoutSpec DataOptions::holdout_spec() const {
+  HoldoutSpec spec = HoldoutSpec::parse(holdout);
+  spec.warmup = warmup.value_or(0);
+  return spec;
+}
+
 namespace {
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -39,6 +45,7 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
     holdout = fit.holdout;
   else
     holdout.mode = elsewhere;
+  holdout.warmup = o.warmup.value_or(fit.holdout.warmup);
   return prepare_model_data(m, fit.scales, holdout);
 }
 
@@ -50,6 +57,11 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
                   "unit of u for reports (default: from DATA.truth.json, if any)");
   cmd->add_option("--output-unit", o.output_unit,
                   "unit of y for reports (default: from DATA.truth.json, if any)");
+  cmd->add_option("--warmup", o.warmup,
+                  "leading samples that only initialise the model (a start-up transient, an "
+                  "unknown initial state): simulated, never fitted or scored (benchmarks: "
+                  "Silverbox 50, cascaded tanks 5; default 0, or the fit's own)")
+      ->check(CLI::NonNegativeNumber);
   if (with_holdout)
     cmd->add_option("--holdout", o.holdout,
                     "samples never used for fitting: auto (the last quarter of every segment, so "

@@ -3,6 +3,7 @@
 // columns and units, what is held out, how to fit, where to write.
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "framework/discovery/data_source.hpp"
@@ -14,16 +15,19 @@ namespace hystbench::cli {
 
 struct DataOptions {
   std::string data, columns, input_unit, output_unit, holdout = "auto";
+  std::optional<long> warmup;  // --warmup; unset: 0, or a fit's own
   DataSource source() const;
-  HoldoutSpec holdout_spec() const { return HoldoutSpec::parse(holdout); }
+  HoldoutSpec holdout_spec() const;
 };
-// --data (required), --columns, --input-unit, --output-unit; --holdout when
-// `with_holdout`.
+// --data (required), --columns, --input-unit, --output-unit, --warmup;
+// --holdout when `with_holdout`.
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
 
 // The measurement a fit record is used on: its columns and units unless
 // given, its fit's scales, and the hold-out: --holdout when given, else the
-// fit's own on the data it was fitted to, else `elsewhere`.
+// fit's own on the data it was fitted to, else `elsewhere`. The warm-up is
+// --warmup when given, else the fit's own on any record: a test record is
+// scored after the same warm-up as the fit.
 ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
                        HoldoutSpec::Mode elsewhere);
 

@@ -147,6 +147,8 @@ Comparison compare_signals(const ComparisonInput& in) {
   const ResidualAnalysis& r = c.residual;
   c.signatures = effect_signatures(
       {in.t, in.u, in.y_model, e, in.segment, c.sample_time, r.ccf, r.lowest_excitation_hz});
+  c.excitation = describe_excitation(in.u, in.segment, c.sample_time, in.u_unit);
+  c.startup = find_startup_transient(e, c.excitation);
   return c;
 }
 
@@ -174,6 +176,8 @@ nlohmann::json to_json(const Comparison& c) {
   out["residual"] = to_json(c.residual);
   out["noise_floor"] = to_json(c.noise_floor, c.parts.heldout.has_value());
   out["signatures"] = to_json(c.signatures);
+  out["excitation"] = c.excitation.to_json();
+  out["startup_transient"] = c.startup.to_json();
   return out;
 }
 

@@ -10,6 +10,8 @@
 #include "framework/discovery/breakdowns.hpp"
 #include "framework/discovery/effect_signatures.hpp"
 #include "framework/discovery/error_metrics.hpp"
+#include "framework/discovery/excitation_content.hpp"
+#include "framework/discovery/startup_transient.hpp"
 #include "framework/discovery/noise_floor.hpp"
 #include "framework/stats/residual_correlation.hpp"
 
@@ -70,6 +72,10 @@ struct Comparison {
   // Every registered effect's own residual statistic, in registry order
   // (effect_signatures.hpp).
   std::vector<EffectSignature> signatures;
+  // What the record excites (excitation_content.hpp).
+  ExcitationContent excitation;
+  // Whether the first periods dominate the error (startup_transient.hpp).
+  StartupTransient startup;
 };
 
 // Throws std::invalid_argument when the lengths differ.

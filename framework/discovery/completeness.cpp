@@ -1,5 +1,6 @@
 #include "framework/discovery/completeness.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -49,6 +50,19 @@ Completeness assess_completeness(const FitErrors& errors, const Comparison& wher
   if (!(c.sigma > 0)) {
     c.kind = "no_noise_estimate";
     c.reason = "No noise estimate: completeness cannot be judged against the noise floor.";
+    return c;
+  }
+  // No model fits below the noise: an error well under the estimate says the
+  // estimate is wrong (records of several realisations with transients
+  // between them inflate the high-order differences it is taken from).
+  const double lowest = heldout ? std::min(c.rmse_over_sigma, c.heldout_rmse_over_sigma) : c.rmse_over_sigma;
+  if (lowest < 1.0 / tolerance) {
+    c.kind = "noise_estimate_too_high";
+    c.reason = "The noise estimate is wrong on this record: the " +
+               std::string(heldout && c.heldout_rmse_over_sigma < c.rmse_over_sigma ? "held-out" : "estimation") +
+               " error is " + format_number("%.3g", lowest) +
+               " σ, below any error the noise would allow, so completeness is not judged against it (" +
+               statistics_text(c, heldout) + ").";
     return c;
   }
   const bool at_floor = c.rmse_over_sigma <= tolerance &&

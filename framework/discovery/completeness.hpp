@@ -8,6 +8,9 @@
 //                kChanceCcfLags of the input–residual cross-correlation lags
 //                leave their 99 % band (2 of 51 by chance: binomial tail 1.4 %).
 //
+// An error below σ/tolerance on either part means the noise estimate is
+// wrong, and nothing is claimed against it.
+//
 // The verdict of a diagnosis ("none": no catalog effect helps) is a
 // different question: a model can be incomplete with no catalog effect that
 // helps (the missing physics is not in the catalog, or the fit is stuck).
@@ -24,7 +27,8 @@ constexpr int kChanceCcfLags = 2;
 
 struct Completeness {
   bool complete = false;
-  // "white_at_floor", "coloured_at_floor", "systematic" or "no_noise_estimate";
+  // "white_at_floor", "coloured_at_floor", "systematic", "no_noise_estimate"
+  // or "noise_estimate_too_high" (an error below 1/tolerance σ);
   // a diagnosis turns "systematic" into "beyond_catalog" when no catalog
   // effect captures what is left (beyond_catalog.hpp).
   std::string kind = "systematic";

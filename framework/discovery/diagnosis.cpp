@@ -16,6 +16,7 @@
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
 #include "framework/discovery/resonance.hpp"
+#include "framework/discovery/separability.hpp"
 #include "framework/io/json_number.hpp"
 
 namespace hystbench {
@@ -100,6 +101,9 @@ Candidate judge_candidate(const std::string& effect, const FitResult& r, const D
                                  signature_in(current.where.signatures, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   if (!shared.empty()) c.evidence += " Not counted: " + shared + ".";
+  const ExcitationContent& excitation = current.where.excitation;
+  for (const auto& p : inseparable_from(effect, current.model.effects(), excitation))
+    c.evidence += " " + p.sentence(excitation);
   return c;
 }
 

@@ -11,6 +11,7 @@
 #include "framework/discovery/fit_record.hpp"
 #include "framework/core/text.hpp"
 #include "framework/discovery/model_comparison.hpp"
+#include "framework/discovery/separability.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/provenance.hpp"
@@ -99,6 +100,9 @@ std::string verdict_section(const Diagnosis& d, const std::string& unit) {
     else if (d.completeness.kind == "coloured_at_floor")
       out << " The error is at the noise estimate but the residual is not white, which points "
              "at coloured measurement noise rather than at a missing effect.";
+    else if (d.completeness.kind == "noise_estimate_too_high")
+      out << " The noise estimate is wrong on this record (the error is below it), so nothing "
+             "is judged against it.";
     else if (d.completeness.kind == "beyond_catalog")
       out << " See \"Beyond the catalog\" below.";
     else if (d.completeness.kind == "systematic")
@@ -134,6 +138,11 @@ std::string where_section(const Diagnosis& d, const std::string& unit,
   out << "; estimated noise σ " << num(d.where.noise_floor.sigma) << unit;
   out << ".\n\n";
   out << worst_groups(d.where, unit);
+  out << "\n" << d.where.excitation.summary() << "\n";
+  if (d.where.startup.dominates) out << "- " << d.where.startup.sentence() << "\n";
+  for (const auto& p : inseparable_pairs(d.model.effects(), d.where.excitation))
+    out << "- " << p.sentence(d.where.excitation) << "\n";
+  out << "\n";
   for (const auto& warning : d.check.warnings()) out << "- " << warning << "\n";
   if (!d.check.warnings().empty()) out << "\n";
   out << "Full breakdowns, residual tests and figures: [" << current_report << "](" << current_report

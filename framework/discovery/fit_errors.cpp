@@ -20,7 +20,7 @@ FitErrors fit_errors(const Model& model, const Eigen::VectorXd& x, const ModelDa
   }
   const Eigen::ArrayXd sq = (data.y - y).array().square();
   e.sse = (sq * data.estimation.array()).sum();
-  const double held = (sq * (1.0 - data.estimation.array())).sum();
+  const double held = (sq * data.heldout_mask().array()).sum();
   e.rmse_estimation = std::sqrt(e.sse / double(e.n_estimation)) * data.scales.y;
   e.rmse_heldout = e.n_heldout ? std::sqrt(held / double(e.n_heldout)) * data.scales.y : 0.0;
   return e;

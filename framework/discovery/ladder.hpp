@@ -4,11 +4,13 @@
 // records the model, its parameters and its errors, so a reader sees the
 // error fall effect by effect.
 //
-// Pruning: an effect just added may make one already there redundant (a
-// Bouc-Wen oscillator explains the resonance an ARX block was fitted to).
-// After each addition every other effect is tried out (removed and the rest
-// polished); the removal that lowers the BIC most is made, and again, until
-// no removal lowers it. The effect just added is protected from this unless
+// Pruning (pruning.hpp): an effect just added may make one already there
+// redundant (a Bouc-Wen oscillator explains the resonance an ARX block was
+// fitted to). After each addition every other effect is tried out (removed
+// and the rest polished); a model that fits worse than one of these
+// sub-models is first refitted from its optimum (the nesting rule); the
+// removal that lowers the BIC most is made, and again, until no removal
+// lowers it. The effect just added is protected from this unless
 // its refit left it doing nothing (neutral within noise, model_check.hpp):
 // then the error fell because of the refit, not because of the effect, and
 // the ladder says so instead of crediting it.
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "framework/discovery/diagnosis.hpp"
+#include "framework/discovery/pruning.hpp"
 
 namespace hystbench {
 
@@ -35,6 +38,8 @@ struct LadderStep {
   std::string evidence = {};              // why it was added
   std::string attribution = {};           // who made the removed effects redundant, or why
                                           // the added effect was dropped again
+  std::vector<NestingRefit> nesting = {};     // the nesting rule's refits while pruning
+  std::vector<TriedSubModel> sub_models = {};  // tried with one effect less (pruning.hpp)
 };
 
 struct Ladder {

@@ -97,7 +97,9 @@ nlohmann::json checkpoint_json(const Ladder& ladder, const nlohmann::json& conte
     steps.push_back({{"added", s.added},
                      {"removed", s.removed},
                      {"evidence", s.evidence},
-                     {"attribution", s.attribution}});
+                     {"attribution", s.attribution},
+                     {"nesting_refits", to_json(s.nesting)},
+                     {"sub_models", to_json(s.sub_models)}});
   for (const auto& d : ladder.diagnoses) diagnoses.push_back(diagnosis_json(d));
   return {{"format", kFormat},
           {"context", context},
@@ -133,6 +135,9 @@ Ladder read_checkpoint(const std::filesystem::path& dir, const nlohmann::json& c
       s.removed = steps[k].at("removed").get<std::vector<std::string>>();
       s.evidence = steps[k].at("evidence").get<std::string>();
       s.attribution = steps[k].at("attribution").get<std::string>();
+      // Checkpoints made before the nesting rule have neither.
+      s.nesting = nesting_refits_from_json(steps[k].value("nesting_refits", nlohmann::json::array()));
+      s.sub_models = tried_sub_models_from_json(steps[k].value("sub_models", nlohmann::json::array()));
       ladder.steps.push_back(std::move(s));
       ladder.diagnoses.push_back(std::move(d));
     }

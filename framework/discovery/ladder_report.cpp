@@ -11,6 +11,7 @@
 #include "framework/discovery/diagnosis_report.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
+#include "framework/discovery/separability.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/gnuplot_script.hpp"
@@ -20,6 +21,28 @@
 
 namespace hystbench {
 namespace {
+
+// What the record excites, and which effects of the final model it cannot
+// tell apart (separability.hpp).
+std::string excitation_section(const Ladder& ladder) {
+  const ExcitationContent& e = ladder.diagnoses.back().where.excitation;
+  std::string out = "## What the record can tell apart\n\n" + e.summary() + "\n";
+  const StartupTransient& t = ladder.diagnoses.back().where.startup;
+  if (t.dominates) out += "\n**" + t.sentence() + "**\n";
+  const auto pairs = inseparable_pairs(ladder.final_effects(), e);
+  for (const auto& p : pairs) out += "\n- " + p.sentence(e);
+  if (pairs.empty()) out += "\nIt separates every pair of effects in the final model that can take over each other's role.";
+  return out + "\n";
+}
+
+nlohmann::json inseparable_json(const Ladder& ladder) {
+  const ExcitationContent& e = ladder.diagnoses.back().where.excitation;
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : inseparable_pairs(ladder.final_effects(), e))
+    out.push_back({{"effect", p.effect}, {"rival", p.rival}, {"needs", need_text(p.need)}, {"sentence", p.sentence(e)}});
+  return out;
+}
+
 
 using markdown::num;
 
@@ -95,6 +118,8 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
                      {"bic", s.bic},
                      {"evidence", s.evidence},
                      {"attribution", s.attribution},
+                     {"nesting_refits", to_json(s.nesting)},
+                     {"sub_models", to_json(s.sub_models)},
                      {"verdict", ladder.diagnoses[k].verdict},
                      {"close_call", close_call_json(ladder.diagnoses[k].close_call)},
                      {"optimum", ladder.diagnoses[k].optimum.to_json()},
@@ -108,6 +133,9 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
                       {"finished", ladder.finished()},
                       {"steps", steps},
                       {"final_effects", ladder.final_effects()},
+                      {"excitation", ladder.diagnoses.back().where.excitation.to_json()},
+                      {"inseparable", inseparable_json(ladder)},
+                      {"startup_transient", ladder.diagnoses.back().where.startup.to_json()},
                       {"final_model", ladder.steps.back().model.text()},
                       {"stopped_by_limit", ladder.stopped_by_limit},
                       {"noise_floor", {{"estimated_sigma", estimated_sigma(ladder)}}},
@@ -185,6 +213,7 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
         << " ([diagnosis](step_" << k - 1 << "/report.md))";
     if (d.close_call.close) out << " *Close call*: " << d.close_call.reason << ".";
     if (!ladder.steps[k].attribution.empty()) out << " " << ladder.steps[k].attribution;
+    for (const auto& n : ladder.steps[k].nesting) out << " " << n.sentence();
     out << "\n";
   }
   for (std::size_t k = 0; k < ladder.diagnoses.size(); ++k)
@@ -193,6 +222,7 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
           << "); " << join(ladder.diagnoses[k].optimum.actions, "; ") << ".\n";
   const std::string beyond = beyond_catalog_markdown(ladder.diagnoses.back().beyond, ctx.source.file_name());
   if (!beyond.empty()) out << "\n" << beyond;
+  out << "\n" << excitation_section(ladder);
   out << "\n" << parameters_section(ladder.diagnoses.back().check);
   out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
       << ladder.steps.size() - 1 << "/report.md). Final fit: `fit.json` (use it with "

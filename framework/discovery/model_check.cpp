@@ -21,6 +21,11 @@ bool near_neutral(const EffectParam& p, double x, double sd) {
   return gap <= kBoundTolerance * (p.upper - p.lower) || (std::isfinite(sd) && gap <= kNeutralSd * sd);
 }
 
+bool on_bound(const EffectParam& p, double x) {
+  const double tol = kBoundTolerance * (p.upper - p.lower);
+  return p.upper > p.lower && (x <= p.lower + tol || x >= p.upper - tol) && !near_neutral(p, x, 0.0);
+}
+
 std::vector<FittedParameter> fitted_parameters(const Model& model, const Eigen::VectorXd& x,
                                                const ModelData& data, const ParameterUncertainty& u,
                                                const nlohmann::json& units) {
@@ -33,9 +38,7 @@ std::vector<FittedParameter> fitted_parameters(const Model& model, const Eigen::
     f.value = values[names[i]].get<double>();
     f.sd = u.sd[i] * std::abs(physical_factor(p, data.scales));
     f.normalised = x[i];
-    const double tol = kBoundTolerance * (p.upper - p.lower);
-    f.at_bound = p.upper > p.lower && (x[i] <= p.lower + tol || x[i] >= p.upper - tol) &&
-                 !near_neutral(p, x[i], 0.0);
+    f.at_bound = on_bound(p, x[i]);
     const bool samples = p.unit == "samples";
     f.seconds = samples ? f.value * data.sample_time : std::nan("");
     f.sd_seconds = samples ? f.sd * data.sample_time : std::nan("");
@@ -109,6 +112,14 @@ nlohmann::json ModelCheck::to_json() const {
   if (!correlated_a.empty())
     j["most_correlated"] = {{"a", correlated_a}, {"b", correlated_b}, {"correlation", correlation}};
   return j;
+}
+
+std::vector<std::string> parameters_on_bound(const Model& model, const Eigen::VectorXd& x) {
+  const auto names = model.parameter_names();
+  std::vector<std::string> out;
+  for (int i = 0; i < model.dimension(); ++i)
+    if (on_bound(model.parameter(i), x[i])) out.push_back(names[i]);
+  return out;
 }
 
 }  // namespace hystbench

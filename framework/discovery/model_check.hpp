@@ -45,4 +45,9 @@ struct ModelCheck {
 ModelCheck check_model(const Model& model, const Eigen::VectorXd& x, const ModelData& data,
                        const std::string& u_unit, const std::string& y_unit);
 
+// The parameters of `model` at `x` that sit on a bound of their search
+// range (and not at their neutral value there), by name: what check_model
+// flags, without the Jacobian.
+std::vector<std::string> parameters_on_bound(const Model& model, const Eigen::VectorXd& x);
+
 }  // namespace hystbench

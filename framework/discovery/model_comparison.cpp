@@ -4,13 +4,14 @@ namespace hystbench {
 
 ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
                                  const std::string& u_unit, const std::string& y_unit) {
+  const Eigen::Index w = data.warmup, n = data.size() - w;
   ComparisonInput in;
-  in.t = data.t;
-  in.u = data.u * data.scales.u;
-  in.y = data.y * data.scales.y;
-  in.y_model = std::move(y_model);
-  in.segment = data.segment;
-  in.estimation = data.estimation;
+  in.t = data.t.tail(n);
+  in.u = data.u.tail(n) * data.scales.u;
+  in.y = data.y.tail(n) * data.scales.y;
+  in.y_model = y_model.tail(n);
+  if (!data.segment.empty()) in.segment.assign(data.segment.begin() + w, data.segment.end());
+  in.estimation = data.estimation.tail(n);
   in.sample_time = data.sample_time;
   in.u_unit = u_unit;
   in.y_unit = y_unit;

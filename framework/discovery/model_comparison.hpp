@@ -6,7 +6,10 @@
 
 namespace hystbench {
 
-// `y_model` in physical units (zeros when the model diverged).
+// `y_model` in physical units (zeros when the model diverged), over the
+// whole record. The warm-up samples (ModelData::warmup) are left out: what
+// is compared starts where the scoring does, so no statistic, breakdown or
+// figure sees the transient the warm-up absorbs.
 ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
                                  const std::string& u_unit, const std::string& y_unit);
 

@@ -67,11 +67,11 @@ Eigen::MatrixXd parameter_columns(const Model& model, const Eigen::VectorXd& x, 
 }
 
 // Rows of `m` where keep[k] is 1.
-Eigen::MatrixXd rows_where(const Eigen::MatrixXd& m, const Eigen::VectorXd& keep, bool value) {
-  Eigen::MatrixXd out(Eigen::Index(value ? keep.sum() : double(keep.size()) - keep.sum()), m.cols());
+Eigen::MatrixXd rows_where(const Eigen::MatrixXd& m, const Eigen::VectorXd& keep) {
+  Eigen::MatrixXd out(Eigen::Index(keep.sum()), m.cols());
   Eigen::Index r = 0;
   for (Eigen::Index k = 0; k < m.rows(); ++k)
-    if ((keep[k] != 0.0) == value) out.row(r++) = m.row(k);
+    if (keep[k] != 0.0) out.row(r++) = m.row(k);
   return out;
 }
 
@@ -144,13 +144,14 @@ void residual_errors(const Columns& c, const ForwardRegression& r, const ModelDa
   for (std::size_t i = 0; i < r.steps.size(); ++i) theta[r.steps[i].column] = r.coefficients[Eigen::Index(i)];
   const Eigen::VectorXd after = c.e - c.terms * theta - c.own * r.fixed_coefficients;
   const double sy = data.scales.y;
-  const Eigen::VectorXd fit_e = rows_where(c.e, data.estimation, true), held_e = rows_where(c.e, data.estimation, false);
+  const Eigen::VectorXd held = data.heldout_mask();
+  const Eigen::VectorXd fit_e = rows_where(c.e, data.estimation), held_e = rows_where(c.e, held);
   p.n_estimation = long(fit_e.size());
   p.n_heldout = long(held_e.size());
   p.rmse_estimation = rms(fit_e) * sy;
-  p.rmse_estimation_after = rms(rows_where(after, data.estimation, true)) * sy;
+  p.rmse_estimation_after = rms(rows_where(after, data.estimation)) * sy;
   p.rmse_heldout = rms(held_e) * sy;
-  p.rmse_heldout_after = rms(rows_where(after, data.estimation, false)) * sy;
+  p.rmse_heldout_after = rms(rows_where(after, held)) * sy;
 }
 
 }  // namespace
@@ -161,11 +162,10 @@ Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const Model
     throw InputError("propose: the degree must be between 1 and 6 (got " + std::to_string(options.degree) + ")");
   const std::vector<CandidateTerm> library = term_library(options.degree);
   const Columns c = regression_columns(model, x, data, library);
-  const auto rows = [&](bool estimation) {
-    return RegressionRows{rows_where(c.terms, data.estimation, estimation), rows_where(c.e, data.estimation, estimation),
-                          rows_where(c.own, data.estimation, estimation)};
+  const auto rows = [&](const Eigen::VectorXd& mask) {
+    return RegressionRows{rows_where(c.terms, mask), rows_where(c.e, mask), rows_where(c.own, mask)};
   };
-  const RegressionRows fit = rows(true), check = rows(false);
+  const RegressionRows fit = rows(data.estimation), check = rows(data.heldout_mask());
   const ForwardRegression r = forward_regression(fit, options.regression, check.e.size() ? &check : nullptr);
 
   Proposal p;

@@ -115,6 +115,21 @@ class Effect {
                                                  const StepContext& ctx) const;
 };
 
+// What a record must excite to tell two effects apart that can take over
+// each other's role (docs/discovery.md, "What the record can tell apart").
+enum class ExcitationNeed {
+  SeveralFrequencies,  // a rate-dependent rival draws the same loop at one frequency
+  SeveralAmplitudes,   // an amplitude-dependent rival matches at one amplitude
+  HeldLevel,           // slow effects differ only after the input holds a new level
+};
+
+// An effect that can carry this one's role on a record that does not
+// excite `need`.
+struct EffectRival {
+  std::string effect;
+  ExcitationNeed need;
+};
+
 struct EffectInfo {
   std::string name;     // catalog name, as written in --model lists
   std::string summary;  // one line: the physical effect
@@ -132,6 +147,10 @@ struct EffectInfo {
   // generalises msd): adding it replaces that effect, carrying over the
   // parameters of the same name. Empty for most effects.
   std::string extends;
+  // Effects that take over this one's role where the record does not excite
+  // what tells them apart (hysteresis and a linear lag at one frequency).
+  // Either side may declare the pair.
+  std::vector<EffectRival> rivals;
   // Filled in by HYSTBENCH_EFFECT.
   std::function<std::unique_ptr<Effect>()> create = nullptr;
 };

@@ -74,7 +74,31 @@ void by_frequency_holdout(ModelData& d) {
 
 }  // namespace
 
-HoldoutSpec HoldoutSpec::parse(const std::string& text, const std::string& where) {
+namespace {
+
+// "…+warmup:N": the count, or InputError naming `where`.
+Eigen::Index parse_warmup(const std::string& text, const std::string& where) {
+  const std::string count = text.substr(text.find(':') + 1);
+  try {
+    std::size_t used = 0;
+    const long n = std::stol(count, &used);
+    if (used == count.size() && n >= 0) return n;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where + " " + text + ": expected a sample count (0 or more) after 'warmup:'");
+}
+
+}  // namespace
+
+HoldoutSpec HoldoutSpec::parse(const std::string& full, const std::string& where) {
+  const auto plus = full.find("+warmup:");
+  const std::string text = full.substr(0, plus);
+  HoldoutSpec s = parse_part(text, where);
+  if (plus != std::string::npos) s.warmup = parse_warmup(full.substr(plus + 1), where);
+  return s;
+}
+
+HoldoutSpec HoldoutSpec::parse_part(const std::string& text, const std::string& where) {
   const std::string forms =
       "auto, none, last:FRACTION (e.g. last:0.25), segments:LABEL,LABEL or by-frequency";
   HoldoutSpec s;
@@ -120,6 +144,10 @@ HoldoutSpec HoldoutSpec::parse(const std::string& text, const std::string& where
 }
 
 std::string HoldoutSpec::text() const {
+  return part_text() + (warmup > 0 ? "+warmup:" + std::to_string(warmup) : "");
+}
+
+std::string HoldoutSpec::part_text() const {
   switch (mode) {
     case Mode::Auto: return "auto";
     case Mode::None: return "none";
@@ -129,6 +157,18 @@ std::string HoldoutSpec::text() const {
   }
   return "auto";
 }
+
+namespace {
+
+void apply_warmup(ModelData& d, Eigen::Index warmup) {
+  if (warmup >= d.size())
+    throw InputError("--warmup " + std::to_string(warmup) + ": the record has only " +
+                     std::to_string(d.size()) + " samples; the warm-up must leave some to score");
+  d.estimation.head(warmup).setZero();
+  d.warmup = warmup;
+}
+
+}  // namespace
 
 void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
   d.estimation.setOnes(d.size());
@@ -148,6 +188,7 @@ void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
       }
       break;
   }
+  apply_warmup(d, spec.warmup);
   if (d.estimation_count() < 2)
     throw InputError("--holdout " + spec.text() + ": leaves fewer than two samples to fit");
 }
@@ -156,16 +197,15 @@ namespace {
 
 std::string by_frequency_text(const ModelData& d, const std::string& count) {
   std::set<std::string> held;
+  const Eigen::VectorXd mask = d.heldout_mask();
   for (Eigen::Index k = 0; k < d.size(); ++k)
-    if (d.estimation[k] == 0.0) held.insert(d.segment[k]);
+    if (mask[k] != 0.0) held.insert(d.segment[k]);
   return count + ": whole segments spread over the frequency band (" +
          join(std::vector<std::string>(held.begin(), held.end()), ", ") +
          "); a test of extrapolation to frequencies the fit never sees.";
 }
 
-}  // namespace
-
-std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
+std::string describe_held_part(const ModelData& d, const HoldoutSpec& spec) {
   const std::string count = std::to_string(d.heldout_count()) + " of " + std::to_string(d.size()) +
                             " samples held out";
   switch (spec.mode) {
@@ -186,6 +226,16 @@ std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
              " (chosen by the user); effects are selected on how they extrapolate to them.";
   }
   return count + ".";
+}
+
+}  // namespace
+
+std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
+  const std::string held = describe_held_part(d, spec);
+  if (d.warmup == 0) return held;
+  return held + " The first " + std::to_string(d.warmup) +
+         " samples are a warm-up (--warmup): the model runs through them to reach the "
+         "record's state, and no error counts them.";
 }
 
 }  // namespace hystbench

@@ -13,15 +13,23 @@ struct HoldoutSpec {
   Mode mode = Mode::Auto;
   double fraction = 0.25;             // Last: the final fraction of the record
   std::vector<std::string> segments;  // Segments: the labels held out
+  // Leading samples that only initialise the model (ModelData::warmup).
+  // Part of the spec so that a fit's record carries it to every later use.
+  Eigen::Index warmup = 0;
 
   // "auto", "none", "last:0.25", "segments:sine_2Hz,sine_20Hz",
-  // "by-frequency". Throws
+  // "by-frequency", each optionally followed by "+warmup:N". Throws
   // InputError naming `where` and the accepted forms.
   static HoldoutSpec parse(const std::string& text, const std::string& where = "--holdout");
   std::string text() const;
+
+ private:
+  static HoldoutSpec parse_part(const std::string& text, const std::string& where);
+  std::string part_text() const;  // text() without the warm-up
 };
 
-// Marks the held-out samples in data.estimation (0 = held out).
+// Marks the held-out samples in data.estimation (0 = held out), then the
+// warm-up (0 as well, and data.warmup set).
 //
 // Auto holds out the last quarter of every segment run (of each of eight
 // equal blocks when the data have no segment column). Model selection is
@@ -35,8 +43,8 @@ struct HoldoutSpec {
 // ranks: a test of extrapolation to unseen frequencies, not a selection
 // hold-out. With fewer than four segments it falls back to Auto.
 //
-// Throws InputError when a named segment does not exist or nothing would be
-// left to fit.
+// Throws InputError when a named segment does not exist, the warm-up is not
+// shorter than the record, or nothing would be left to fit.
 void apply_holdout(ModelData& data, const HoldoutSpec& spec);
 
 // One sentence for reports: what `spec` held out of `data` and why.

@@ -1,5 +1,6 @@
 #include "framework/model/model_data.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/core/error.hpp"
@@ -45,8 +46,15 @@ ModelData ModelData::head(Eigen::Index n) const {
   h.u = u.head(n);
   h.y = y.head(n);
   h.estimation = estimation.head(n);
+  h.warmup = std::min(warmup, n);
   if (!segment.empty()) h.segment.assign(segment.begin(), segment.begin() + n);
   return h;
+}
+
+Eigen::VectorXd ModelData::heldout_mask() const {
+  Eigen::VectorXd held = (1.0 - estimation.array()).matrix();
+  held.head(warmup).setZero();
+  return held;
 }
 
 Eigen::Index ModelData::estimation_count() const {

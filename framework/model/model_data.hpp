@@ -30,8 +30,13 @@ struct ModelData {
   double sample_time = 0.0;
   SignalScales scales;
   std::vector<std::string> segment;  // one label per sample, or empty
-  // 1 for samples the fit uses (estimation), 0 for held-out samples.
+  // 1 for samples the fit uses (estimation), 0 for held-out and warm-up
+  // samples.
   Eigen::VectorXd estimation;
+  // The first `warmup` samples only bring the model's state to where the
+  // record is (a start-up transient, an unknown initial state): they are
+  // simulated but neither fitted nor held out, and no error counts them.
+  Eigen::Index warmup = 0;
 
   ModelData() = default;
   // Every sample is an estimation sample until a hold-out is applied.
@@ -41,7 +46,9 @@ struct ModelData {
   // The first n samples (n <= size()), with their labels and mask.
   ModelData head(Eigen::Index n) const;
   Eigen::Index estimation_count() const;
-  Eigen::Index heldout_count() const { return size() - estimation_count(); }
+  // 1 for held-out samples: neither estimation nor warm-up.
+  Eigen::VectorXd heldout_mask() const;
+  Eigen::Index heldout_count() const { return size() - warmup - estimation_count(); }
 };
 
 }  // namespace hystbench

@@ -55,6 +55,9 @@ class Creep : public KernelEffect<Creep, 1, EffectDrive::StageInput> {
     i.statistic = {"corr(e, lagged u)", slow_input_correlation,
                    "the residual correlates with the input through a first-order lag of {tau} s, "
                    "one period of the slowest excitation (r = {value})"};
+    // Without a held input level, creep's slow approach is a trend (drift)
+    // or a constant (offset) over a short record.
+    i.rivals = {{"drift", ExcitationNeed::HeldLevel}, {"offset", ExcitationNeed::HeldLevel}};
     return i;
   }
 

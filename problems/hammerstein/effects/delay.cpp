@@ -56,6 +56,9 @@ class Delay : public Effect {
     i.statistic = {"corr(e, −dŷ/dt)", slope_correlation,
                    "the residual follows −dŷ/dt (r = {value}; least-squares delay {seconds} s) "
                    "and the input-residual cross-correlation peaks at lag {lag} samples"};
+    // At one frequency a delay is one phase lag, which a dynamic block's lag
+    // matches; a delay's phase grows in proportion to frequency.
+    i.rivals = {{"arx", ExcitationNeed::SeveralFrequencies}, {"msd", ExcitationNeed::SeveralFrequencies}};
     return i;
   }
 

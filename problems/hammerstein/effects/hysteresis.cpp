@@ -60,6 +60,12 @@ class Hysteresis : public KernelEffect<Hysteresis, 3, EffectDrive::StageInput> {
                    "the residual correlates with a hysteresis loop driven by the input, the "
                    "stop operator u − play_r(u) with r = {width} of the input's half range "
                    "(r = {value})"};
+    // At one frequency a linear lag draws the same ellipse as a
+    // rate-independent loop; only the loop's change with frequency tells
+    // them apart.
+    i.rivals = {{"msd", ExcitationNeed::SeveralFrequencies},
+                {"arx", ExcitationNeed::SeveralFrequencies},
+                {"second_mode", ExcitationNeed::SeveralFrequencies}};
     return i;
   }
 

@@ -55,6 +55,10 @@ class Saturation : public Effect {
     i.statistic = {"top-bin SSE share / sample share", top_bin_error_share,
                    "the top amplitude bin holds {value} times its share of the samples in "
                    "squared error ({sse_share} of the SSE on {sample_share} of the samples)"};
+    // At one amplitude a flattened top and an even-order bend are both one
+    // fixed distortion of the loop; only a second amplitude shows which
+    // grows how.
+    i.rivals = {{"asymmetry", ExcitationNeed::SeveralAmplitudes}};
     return i;
   }
 

@@ -1,0 +1,38 @@
+#pragma once
+// Does a start-up transient dominate the error? A model started at rest
+// follows a measured record only after its states (the hysteresis
+// variable, a resonance, creep) have caught up with the actuator's, so the
+// first period of every excited part (excitation_content.hpp) can hold an
+// error the rest of the record does not have: a Bouc-Wen loop started at
+// z = 0 draws a virgin curve where the actuator, already cycled, draws its
+// loop. When those first periods hold far more than their share of the
+// squared error, the fit is decided by the transient, not by the physics
+// of the rest; the cure is a warm-up (--warmup), not another effect, and
+// discovery prunes none of the start model's effects on that evidence.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "framework/discovery/excitation_content.hpp"
+
+namespace hystbench {
+
+// The first periods dominate when they hold at least this share of the
+// squared error and this many times their share of the samples.
+inline constexpr double kTransientErrorShare = 0.2;
+inline constexpr double kTransientConcentration = 4.0;
+
+struct StartupTransient {
+  bool dominates = false;
+  double error_share = 0;   // of the squared error, in the first periods
+  double sample_share = 0;  // of the samples
+  Eigen::Index warmup = 0;  // samples up to the end of the first excited part's first period
+  // Says where it sits and what to do; empty when it does not dominate.
+  std::string sentence() const;
+  nlohmann::json to_json() const;
+};
+
+// `e`: the residual of the compared samples; `excitation` of the same samples.
+StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation);
+
+}  // namespace hystbench

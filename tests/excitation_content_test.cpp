@@ -1,0 +1,129 @@
+// What a record excites (framework/discovery/excitation_content.hpp) and which
+// effect pairs it can tell apart (separability.hpp), on inputs whose
+// answer is known by construction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "framework/discovery/excitation_content.hpp"
+#include "framework/discovery/separability.hpp"
+#include "framework/discovery/startup_transient.hpp"
+
+namespace hystbench {
+namespace {
+
+constexpr double kTs = 1e-3;
+
+// `seconds` of a sine of `hz` and `amplitude`, appended to u.
+void sine(std::vector<double>& u, double hz, double amplitude, double seconds) {
+  const auto n = std::size_t(std::lround(seconds / kTs));
+  for (std::size_t k = 0; k < n; ++k) u.push_back(amplitude * std::sin(2 * M_PI * hz * double(k) * kTs));
+}
+
+void hold(std::vector<double>& u, double level, double seconds) {
+  u.insert(u.end(), std::size_t(std::lround(seconds / kTs)), level);
+}
+
+ExcitationContent of(const std::vector<double>& u) {
+  return describe_excitation(Eigen::Map<const Eigen::VectorXd>(u.data(), Eigen::Index(u.size())), {}, kTs, "V");
+}
+
+TEST(ExcitationContent, OneSineAfterARestIsOneFrequencyAtOneAmplitude) {
+  std::vector<double> u;
+  hold(u, 0.0, 3.0);
+  sine(u, 1.0, 75.0, 10.0);
+  const ExcitationContent e = of(u);
+  ASSERT_EQ(e.parts.size(), 1u);
+  EXPECT_TRUE(e.parts[0].tone);
+  EXPECT_NEAR(e.parts[0].frequency_hz, 1.0, 0.02);
+  EXPECT_NEAR(e.parts[0].periods, 10.0, 0.2);
+  EXPECT_NEAR(e.amplitude_high, 75.0, 1.0);
+  ASSERT_EQ(e.rests.size(), 1u);
+  EXPECT_NEAR(e.rest_seconds(), 3.0, 0.01);
+  EXPECT_FALSE(e.rests[0].after_change);  // a rest at the start is no step
+  EXPECT_FALSE(e.meets(ExcitationNeed::SeveralFrequencies));
+  EXPECT_FALSE(e.meets(ExcitationNeed::SeveralAmplitudes));
+  EXPECT_FALSE(e.meets(ExcitationNeed::HeldLevel));
+  const std::string s = e.summary();
+  EXPECT_NE(s.find("one frequency (1 Hz)"), std::string::npos) << s;
+  EXPECT_NE(s.find("one amplitude (75 V)"), std::string::npos) << s;
+  EXPECT_NE(s.find("3 s at rest"), std::string::npos) << s;  // 3.006 s, to two digits
+}
+
+TEST(ExcitationContent, SinesOverADecadeAtTwoAmplitudesAndAHeldStep) {
+  std::vector<double> u;
+  sine(u, 2.0, 40.0, 2.0);
+  sine(u, 20.0, 80.0, 0.5);
+  hold(u, 30.0, 1.0);  // a step to 30, held for 1 s
+  const ExcitationContent e = of(u);
+  EXPECT_TRUE(e.meets(ExcitationNeed::SeveralFrequencies)) << e.to_json().dump();
+  EXPECT_TRUE(e.meets(ExcitationNeed::SeveralAmplitudes)) << e.to_json().dump();
+  EXPECT_TRUE(e.meets(ExcitationNeed::HeldLevel));
+}
+
+TEST(ExcitationContent, ABroadbandInputSpansItsBand) {
+  // Equal-amplitude tones every 5 Hz from 5 to 100 Hz: no single line
+  // holds the power.
+  std::vector<double> u(20000, 0.0);
+  for (int f = 5; f <= 100; f += 5)
+    for (std::size_t k = 0; k < u.size(); ++k) u[k] += std::sin(2 * M_PI * f * double(k) * kTs + f);
+  const ExcitationContent e = of(u);
+  ASSERT_EQ(e.parts.size(), 1u);
+  EXPECT_FALSE(e.parts[0].tone);
+  EXPECT_LT(e.low_hz, 12.0);
+  EXPECT_GT(e.high_hz, 90.0);
+  EXPECT_TRUE(e.meets(ExcitationNeed::SeveralFrequencies));
+}
+
+TEST(Separability, HysteresisAndALagAtOneFrequencyAreNamedWithTheAdvice) {
+  std::vector<double> u;
+  sine(u, 1.0, 75.0, 10.0);
+  const ExcitationContent e = of(u);
+  const auto pairs = inseparable_pairs({"hysteresis", "asymmetry", "msd"}, e);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].effect, "hysteresis");
+  EXPECT_EQ(pairs[0].rival, "msd");
+  const std::string s = pairs[0].sentence(e);
+  EXPECT_NE(s.find("cannot tell hysteresis from msd"), std::string::npos) << s;
+  EXPECT_NE(s.find("three frequencies over a decade"), std::string::npos) << s;
+  // Declared on either side: msd finds hysteresis too.
+  EXPECT_EQ(inseparable_from("msd", {"hysteresis"}, e).size(), 1u);
+
+  std::vector<double> wide;
+  sine(wide, 1.0, 75.0, 5.0);
+  sine(wide, 10.0, 75.0, 1.0);
+  EXPECT_TRUE(inseparable_pairs({"hysteresis", "asymmetry", "msd"}, of(wide)).empty());
+}
+
+TEST(Separability, SaturationAndAsymmetryNeedTwoAmplitudesCreepAHeldLevel) {
+  std::vector<double> u;
+  sine(u, 1.0, 75.0, 4.0);
+  sine(u, 10.0, 75.0, 1.0);
+  const ExcitationContent e = of(u);
+  const auto pairs = inseparable_pairs({"asymmetry", "saturation", "creep", "drift", "offset"}, e);
+  std::vector<std::string> names;
+  for (const auto& p : pairs) names.push_back(p.effect + "/" + p.rival);
+  EXPECT_EQ(names, (std::vector<std::string>{"asymmetry/saturation", "creep/drift", "creep/offset"}));
+}
+
+TEST(StartupTransient, AnErrorInTheFirstPeriodAfterARestIsNamedWithItsWarmUp) {
+  std::vector<double> u;
+  hold(u, 0.0, 1.0);
+  sine(u, 2.0, 50.0, 5.0);  // ten periods of 500 samples after 1000 at rest
+  const ExcitationContent c = of(u);
+  Eigen::VectorXd e = Eigen::VectorXd::Constant(Eigen::Index(u.size()), 0.01);
+  e.segment(1000, 500).setConstant(0.2);  // the first period after the rest
+  const StartupTransient t = find_startup_transient(e, c);
+  EXPECT_TRUE(t.dominates);
+  // The rest ends where the sine leaves 2 % of its range, a few samples in.
+  EXPECT_NEAR(double(t.warmup), 1500.0, 5.0);
+  EXPECT_NEAR(t.sample_share, 500.0 / 6000.0, 1e-3);
+  EXPECT_NE(t.sentence().find("--warmup " + std::to_string(t.warmup)), std::string::npos) << t.sentence();
+  // The same error spread over the record is no transient.
+  EXPECT_FALSE(find_startup_transient(Eigen::VectorXd::Constant(Eigen::Index(u.size()), 0.01), c).dominates);
+}
+
+}  // namespace
+}  // namespace hystbench
