@@ -88,8 +88,10 @@ TEST(Separability, HysteresisAndALagAtOneFrequencyAreNamedWithTheAdvice) {
   const std::string s = pairs[0].sentence(e);
   EXPECT_NE(s.find("cannot tell hysteresis from msd"), std::string::npos) << s;
   EXPECT_NE(s.find("three frequencies over a decade"), std::string::npos) << s;
-  // Declared on either side: msd finds hysteresis too.
+  // Declared on either side: msd finds hysteresis too; and an effect that
+  // generalises msd inherits its rivals.
   EXPECT_EQ(inseparable_from("msd", {"hysteresis"}, e).size(), 1u);
+  EXPECT_EQ(inseparable_from("hysteresis", {"feedback_hysteresis"}, e).size(), 1u);
 
   std::vector<double> wide;
   sine(wide, 1.0, 75.0, 5.0);

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/text.hpp"
 #include "framework/discovery/ladder.hpp"
 #include "framework/discovery/separability.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
@@ -218,8 +219,12 @@ TEST(SingleFrequency, DiscoveryKeepsHysteresisAndSaysWhyTheRecordCannotConfirmIt
   const auto has = [&](const std::string& e) {
     return std::find(final_effects.begin(), final_effects.end(), e) != final_effects.end();
   };
-  EXPECT_TRUE(has("hysteresis")) << ladder.steps.back().model.text();
-  EXPECT_TRUE(has("offset")) << ladder.steps.back().model.text();
+  std::string trace;
+  for (const auto& step : ladder.steps)
+    trace += "\n" + step.model.text() + " (+" + step.added + ", −" + join(step.removed, ",") + "): " + step.attribution;
+  std::printf("[ single frequency ] ladder:%s\n", trace.c_str());
+  EXPECT_TRUE(has("hysteresis")) << trace;
+  EXPECT_TRUE(has("offset")) << trace;
   const ExcitationContent& e = ladder.diagnoses.back().where.excitation;
   EXPECT_FALSE(e.meets(ExcitationNeed::SeveralFrequencies)) << e.summary();
   const auto pairs = inseparable_pairs(final_effects, e);

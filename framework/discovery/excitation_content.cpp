@@ -222,20 +222,32 @@ double ExcitationContent::rest_seconds() const {
   return s;
 }
 
+std::string ExcitationContent::holds(ExcitationNeed need) const {
+  const std::string unit = u_unit.empty() ? "" : " " + u_unit;
+  switch (need) {
+    case ExcitationNeed::SeveralFrequencies:
+      return meets(need) ? "frequencies from " + hz(low_hz) + " to " + hz(high_hz)
+                         : "one frequency (" + hz(std::sqrt(low_hz * high_hz)) + ")";
+    case ExcitationNeed::SeveralAmplitudes:
+      return meets(need) ? "amplitudes from " + format_number("%.3g", amplitude_low) + " to " +
+                               format_number("%.3g", amplitude_high) + unit
+                         : "one amplitude (" + format_number("%.3g", amplitude_high) + unit + ")";
+    case ExcitationNeed::HeldLevel:
+      return meets(need) ? "a held level after a change" : "no held input level after a change";
+  }
+  return "";
+}
+
 std::string ExcitationContent::summary() const {
   if (parts.empty()) return "The input never moves: the record excites nothing.";
-  const std::string unit = u_unit.empty() ? "" : " " + u_unit;
   std::string f;
   if (!meets(ExcitationNeed::SeveralFrequencies))
-    f = "one frequency (" + hz(std::sqrt(low_hz * high_hz)) + ")";
+    f = holds(ExcitationNeed::SeveralFrequencies);
   else if (tones_hz.size() > 1 && std::all_of(parts.begin(), parts.end(), [](const ExcitedPart& p) { return p.tone; }))
     f = std::to_string(tones_hz.size()) + " frequencies (" + hz(low_hz) + " to " + hz(high_hz) + ")";
   else
     f = "a band from " + hz(low_hz) + " to " + hz(high_hz);
-  const std::string a = meets(ExcitationNeed::SeveralAmplitudes)
-                            ? "amplitudes from " + format_number("%.3g", amplitude_low) + " to " +
-                                  format_number("%.3g", amplitude_high) + unit
-                            : "one amplitude (" + format_number("%.3g", amplitude_high) + unit + ")";
+  const std::string a = holds(ExcitationNeed::SeveralAmplitudes);
   double periods = 0;
   for (const auto& p : parts) periods += p.periods;
   std::string s = "The record excites " + f + " at " + a + ": " +
@@ -244,7 +256,7 @@ std::string ExcitationContent::summary() const {
   if (!rests.empty())
     s += ", " + format_number("%.2g", rest_seconds()) + " s at rest in " + std::to_string(rests.size()) +
          (rests.size() == 1 ? " stretch" : " stretches");
-  s += ". The first period of each excited part is a start-up transient for any model started at rest.";
+  s += ".";
   return s;
 }
 

@@ -45,6 +45,8 @@ struct ExcitationContent {
   // record can tell apart").
   bool meets(ExcitationNeed need) const;
   double rest_seconds() const;
+  // What the record holds of what `need` asks: "one frequency (1 Hz)".
+  std::string holds(ExcitationNeed need) const;
   // "one frequency (1 Hz) at one amplitude (75 V): 3.0 s at rest, then 10
   // periods; the first period after a rest is a start-up transient"
   std::string summary() const;

@@ -7,7 +7,7 @@ namespace hystbench {
 namespace {
 
 // What separates `a` from `b`, if either declares the other a rival.
-std::optional<ExcitationNeed> rivalry(const std::string& a, const std::string& b) {
+std::optional<ExcitationNeed> declared_rivalry(const std::string& a, const std::string& b) {
   const auto& registry = EffectRegistry::instance();
   for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}})
     for (const auto& r : registry.find(x, "effect").rivals)
@@ -15,14 +15,26 @@ std::optional<ExcitationNeed> rivalry(const std::string& a, const std::string& b
   return std::nullopt;
 }
 
+// The same, where an effect also inherits the rivals of the effect it
+// generalises (EffectInfo::extends: a Bouc-Wen oscillator can carry
+// whatever the msd it replaces can).
+std::optional<ExcitationNeed> rivalry(const std::string& a, const std::string& b) {
+  const auto& registry = EffectRegistry::instance();
+  const std::string& a_base = registry.find(a, "effect").extends;
+  const std::string& b_base = registry.find(b, "effect").extends;
+  for (const auto& x : {a, a_base})
+    for (const auto& y : {b, b_base})
+      if (!x.empty() && !y.empty() && x != y)
+        if (const auto need = declared_rivalry(x, y)) return need;
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string Inseparable::sentence(const ExcitationContent& e) const {
-  std::string held = e.summary();
-  if (!held.empty() && held.back() == '.') held.pop_back();
-  return "The record cannot tell " + effect + " from " + rival + ": either can carry the other's role unless the record holds " +
-         need_text(need) + ", and here it does not (" + held + "). To tell them apart, " +
-         excitation_advice(need) + ".";
+  return "The record cannot tell " + effect + " from " + rival +
+         ": either can carry the other's role unless the record holds " + need_text(need) + ", and this one holds " +
+         e.holds(need) + ". To tell them apart, " + excitation_advice(need) + ".";
 }
 
 std::vector<Inseparable> inseparable_from(const std::string& effect, const std::vector<std::string>& others,
