@@ -67,6 +67,20 @@ std::string attribution(const Candidate& w, bool dropped, const Pruned& p,
 // and a removal whose fit pins a parameter of the model that takes over on
 // a bound is a takeover by a degenerate rival, not evidence, unless the
 // effect was doing nothing (neutral within noise) anyway.
+std::optional<std::string> takeover_on_bound(const std::string& effect, const FitResult& current,
+                                             const FitResult& sub, const ModelData& data, const DiscoverOptions& o) {
+  const auto before = parameters_on_bound(current.model, current.x);
+  std::vector<std::string> pinned;
+  for (const auto& name : parameters_on_bound(sub.model, sub.x))
+    if (std::find(before.begin(), before.end(), name) == before.end()) pinned.push_back(name);
+  if (pinned.empty()) return std::nullopt;
+  if (check_model(current.model, current.x, data, o.diagnose.u_unit, o.diagnose.y_unit).neutral(effect))
+    return std::nullopt;
+  return "without it, " + join(pinned, ", ") + (pinned.size() == 1 ? " sits" : " sit") +
+         " on a bound of the search range: its role passed to an effect that can draw it only at "
+         "the edge of its physical range, which is a takeover, not evidence that " + effect + " is absent.";
+}
+
 KeepReason start_effect_keep_reason(const Ladder& ladder, const ModelData& data, const DiscoverOptions& o) {
   const auto start = ladder.steps.front().model.effects();
   const Comparison& where = ladder.diagnoses.back().where;
@@ -76,17 +90,7 @@ KeepReason start_effect_keep_reason(const Ladder& ladder, const ModelData& data,
     const auto pairs = inseparable_from(effect, current.model.effects(), where.excitation);
     if (!pairs.empty()) return pairs.front().sentence(where.excitation);
     if (where.startup.dominates) return where.startup.sentence();
-    const auto before = parameters_on_bound(current.model, current.x);
-    std::vector<std::string> pinned;
-    for (const auto& name : parameters_on_bound(sub.model, sub.x))
-      if (std::find(before.begin(), before.end(), name) == before.end()) pinned.push_back(name);
-    if (pinned.empty()) return std::nullopt;
-    if (check_model(current.model, current.x, data, o.diagnose.u_unit, o.diagnose.y_unit).neutral(effect))
-      return std::nullopt;
-    return "without it, " + join(pinned, ", ") + (pinned.size() == 1 ? " sits" : " sit") +
-           " on a bound of the search range: its role passed to an effect that can draw it only at "
-           "the edge of its physical range, which is a takeover, not evidence that " + effect +
-           " is absent.";
+    return takeover_on_bound(effect, current, sub, data, o);
   };
 }
 
