@@ -157,6 +157,33 @@ TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
   EXPECT_TRUE(fs::exists(dir_ / "l" / "ladder.gp"));
 }
 
+TEST_F(DiscoveryCli, AWarmUpIsNeverScoredAndTravelsWithTheFit) {
+  // 1 200 samples; the first 100 only initialise the model.
+  const auto f = run("fit --data " + path("data.csv") + " --model msd,offset --warmup 100 --out " + path("w") + kQuick);
+  ASSERT_EQ(f.code, 0) << f.output;
+  const auto fit = read_json(dir_ / "w" / "fit.json");
+  EXPECT_EQ(fit["holdout"], "auto+warmup:100");
+  const long estimation = fit["errors"]["estimation_samples"], heldout = fit["errors"]["heldout_samples"];
+  EXPECT_EQ(estimation + heldout, 1100);
+  // compare inherits the warm-up, and its excitation sentence names the sines.
+  const auto c = run("compare --data " + path("data.csv") + " --fit " + path("w/fit.json") + " --out " + path("wc"));
+  ASSERT_EQ(c.code, 0) << c.output;
+  const auto m = read_json(dir_ / "wc" / "metrics.json");
+  EXPECT_EQ(m["all"]["n"], 1100);
+  EXPECT_EQ(m["excitation"]["tones_hz"].size(), 4u) << m["excitation"].dump();
+  EXPECT_NE(c.output.find("The record excites 4 frequencies"), std::string::npos) << c.output;
+  // --warmup 0 on the command line scores every sample again.
+  const auto all = run("compare --data " + path("data.csv") + " --fit " + path("w/fit.json") + " --warmup 0 --out " +
+                       path("wa"));
+  ASSERT_EQ(all.code, 0) << all.output;
+  EXPECT_EQ(read_json(dir_ / "wa" / "metrics.json")["all"]["n"], 1200);
+  // A warm-up as long as the record leaves nothing to score.
+  const auto bad = run("fit --data " + path("data.csv") + " --model msd --warmup 1200 --out " + path("wb"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("--warmup 1200: the record has only 1200 samples"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir_ / "wb" / "fit.json"));
+}
+
 TEST_F(DiscoveryCli, BadInputGetsOneMessageAndExitTwo) {
   auto r = run("fit --data " + path("data.csv") + " --model msd,creeep --out " + path("x"));
   EXPECT_EQ(r.code, 2);
