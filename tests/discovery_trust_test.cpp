@@ -189,11 +189,17 @@ TEST(Completeness, WithoutANoiseEstimateNothingIsClaimed) {
 }
 
 TEST(Completeness, AnErrorWellBelowTheNoiseEstimateMeansTheEstimateIsWrong) {
-  // Silverbox-like: 0.39 mV held out against a noise estimate of 1.01 mV.
-  const Completeness c = assess_completeness(errors(1.43, 0.39), where(1.01, 0.5, 0));
+  // Both parts at or under the floor, one well under it: nothing is judged.
+  const Completeness c = assess_completeness(errors(1.1, 0.39), where(1.01, 0.5, 0));
   EXPECT_FALSE(c.complete);
   EXPECT_EQ(c.kind, "noise_estimate_too_high");
   EXPECT_NE(c.reason.find("held-out error is 0.386 σ"), std::string::npos) << c.reason;
+  // Silverbox-like: 1.43 mV on the estimation part, 0.39 mV held out, against
+  // an estimate of 1.01 mV: still systematic, and the reason says the
+  // estimate is too high.
+  const Completeness s = assess_completeness(errors(1.43, 0.39), where(1.01, 0.5, 0));
+  EXPECT_EQ(s.kind, "systematic");
+  EXPECT_NE(s.reason.find("noise estimate is too high"), std::string::npos) << s.reason;
   // Just under the estimate, within the tolerance, is still at the floor.
   EXPECT_TRUE(assess_completeness(errors(0.9, 0.95), where(1.0, 0.3, 1)).complete);
 }

@@ -19,7 +19,7 @@ DataSource DataOptions::source() const {
 
 HoldoutSpec DataOptions::holdout_spec() const {
   HoldoutSpec spec = HoldoutSpec::parse(holdout);
-  spec.warmup = warmup.value_or(0);
+  if (warmup) spec.warmup = *warmup;  // else the hold-out text's own (auto+warmup:N), or 0
   return spec;
 }
 
@@ -45,7 +45,10 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
     holdout = fit.holdout;
   else
     holdout.mode = elsewhere;
-  holdout.warmup = o.warmup.value_or(fit.holdout.warmup);
+  if (o.warmup)
+    holdout.warmup = *o.warmup;
+  else if (holdout.warmup == 0)
+    holdout.warmup = fit.holdout.warmup;
   return prepare_model_data(m, fit.scales, holdout);
 }
 

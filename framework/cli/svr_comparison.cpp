@@ -22,6 +22,7 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   HoldoutSpec holdout;
   holdout.mode = HoldoutSpec::Mode::None;
   if (cmd.count("--holdout")) holdout = data.holdout_spec();
+  if (data.warmup) holdout.warmup = *data.warmup;
   const ModelData model_data = prepare_model_data(m, SignalScales::of(m), holdout);
   const auto dir = output.prepare("metrics.json");
   return write_and_print_comparison(dir, source, model_data, model.simulate(m.u, m.y), model.describe(),

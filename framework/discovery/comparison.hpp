@@ -23,6 +23,9 @@ struct ComparisonInput {
   Eigen::VectorXd estimation;        // 1 = estimation sample, 0 = held out; empty = all estimation
   double sample_time = 0.0;          // 0: inferred from t
   std::string u_unit, y_unit;        // for tables and axes; may be empty
+  // Index in the record of the first sample compared (the warm-up's length):
+  // advice that names a sample count (--warmup) counts from the record's start.
+  Eigen::Index first_sample = 0;
 };
 
 // The error metrics of the parts of the record.

@@ -53,10 +53,18 @@ Completeness assess_completeness(const FitErrors& errors, const Comparison& wher
     return c;
   }
   // No model fits below the noise: an error well under the estimate says the
-  // estimate is wrong (records of several realisations with transients
-  // between them inflate the high-order differences it is taken from).
+  // estimate is too high (records of several realisations with transients
+  // between them inflate the high-order differences it is taken from). A
+  // part above the floor stays systematic, since a smaller σ only makes it
+  // more so; only a fit at or under the floor everywhere is left unjudged.
   const double lowest = heldout ? std::min(c.rmse_over_sigma, c.heldout_rmse_over_sigma) : c.rmse_over_sigma;
-  if (lowest < 1.0 / tolerance) {
+  const bool above = c.rmse_over_sigma > tolerance || (heldout && c.heldout_rmse_over_sigma > tolerance);
+  const std::string too_high = lowest < 1.0 / tolerance
+                                   ? " The noise estimate is too high on this record (an error of " +
+                                         format_number("%.3g", lowest) + " σ is below any the noise allows), so "
+                                         "these ratios understate what is left."
+                                   : "";
+  if (lowest < 1.0 / tolerance && !above) {
     c.kind = "noise_estimate_too_high";
     c.reason = "The noise estimate is wrong on this record: the " +
                std::string(heldout && c.heldout_rmse_over_sigma < c.rmse_over_sigma ? "held-out" : "estimation") +
@@ -80,7 +88,7 @@ Completeness assess_completeness(const FitErrors& errors, const Comparison& wher
                "noise, or a small systematic error): " + numbers;
   } else {
     c.kind = "systematic";
-    c.reason = "Something systematic is left: " + numbers;
+    c.reason = "Something systematic is left: " + numbers + too_high;
   }
   return c;
 }

@@ -9,7 +9,8 @@
 //                leave their 99 % band (2 of 51 by chance: binomial tail 1.4 %).
 //
 // An error below σ/tolerance on either part means the noise estimate is
-// wrong, and nothing is claimed against it.
+// too high: a fit at or under the floor everywhere is then not judged
+// (kind "noise_estimate_too_high"), and a systematic reason says so.
 //
 // The verdict of a diagnosis ("none": no catalog effect helps) is a
 // different question: a model can be incomplete with no catalog effect that

@@ -15,20 +15,26 @@ constexpr double kToneShare = 0.8;  // of the power within ±3 bins of the peak
 constexpr double kBandShare = 0.9;
 constexpr double kLineShare = 0.05;  // a spectral line that counts as a frequency of the record
 
-// Rests of one run: stretches within kRestTolerance of the run's range of
-// their first sample, at least kShortestRestSeconds and 20 samples long.
-std::vector<RestPart> rests_of(const Eigen::VectorXd& u, const SegmentRun& run, double ts) {
+// Rests of one run: stretches within kRestTolerance of the record's range
+// (`range`) of their first sample, at least kShortestRestSeconds and 20
+// samples long (any length when the whole record is constant). A rest
+// follows a change unless it starts the record or continues, at the same
+// level, a rest that ended where it begins (`before`, of the earlier runs).
+std::vector<RestPart> rests_of(const Eigen::VectorXd& u, const SegmentRun& run, double ts, double range,
+                               const std::vector<RestPart>& before) {
   const Eigen::VectorXd x = u.segment(run.begin, run.size());
-  const double range = x.maxCoeff() - x.minCoeff();
+  const double tolerance = kRestTolerance * range;
   const auto shortest = Eigen::Index(std::max(20.0, std::ceil(kShortestRestSeconds / ts)));
   std::vector<RestPart> out;
   Eigen::Index start = 0;
   while (start < x.size()) {
     Eigen::Index k = start + 1;
-    while (k < x.size() && std::abs(x[k] - x[start]) <= kRestTolerance * range) ++k;
+    while (k < x.size() && std::abs(x[k] - x[start]) <= tolerance) ++k;
     if (k - start >= shortest || range == 0) {
       RestPart r{run.begin + start, run.begin + k, x.segment(start, k - start).mean(), false};
-      r.after_change = start > 0 || (!out.empty() && std::abs(r.level - out.back().level) > kRestTolerance * range);
+      const RestPart* previous = !out.empty() ? &out.back() : !before.empty() ? &before.back() : nullptr;
+      const bool continues = previous && previous->end == r.begin && std::abs(r.level - previous->level) <= tolerance;
+      r.after_change = r.begin > 0 && !continues;
       out.push_back(r);
     }
     start = k;
@@ -153,7 +159,8 @@ ExcitedPart excited_part(const Eigen::VectorXd& u, const std::string& label, Eig
 }
 
 void add_run(ExcitationContent& e, const Eigen::VectorXd& u, const SegmentRun& run) {
-  const auto rests = rests_of(u, run, e.sample_time);
+  const double range = u.size() ? u.maxCoeff() - u.minCoeff() : 0.0;
+  const auto rests = rests_of(u, run, e.sample_time, range, e.rests);
   Eigen::Index from = run.begin;
   const auto moving = [&](Eigen::Index to) {
     if (to - from >= 8) e.parts.push_back(excited_part(u, run.label, from, to, e.sample_time));

@@ -47,8 +47,8 @@ struct ExcitationContent {
   double rest_seconds() const;
   // What the record holds of what `need` asks: "one frequency (1 Hz)".
   std::string holds(ExcitationNeed need) const;
-  // "one frequency (1 Hz) at one amplitude (75 V): 3.0 s at rest, then 10
-  // periods; the first period after a rest is a start-up transient"
+  // "The record excites one frequency (1 Hz) at one amplitude (75 V): 1
+  // excited part holding 10 periods in all, 3 s at rest in 1 stretch."
   std::string summary() const;
   nlohmann::json to_json() const;
 };

@@ -12,6 +12,7 @@ ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
   in.y_model = y_model.tail(n);
   if (!data.segment.empty()) in.segment.assign(data.segment.begin() + w, data.segment.end());
   in.estimation = data.estimation.tail(n);
+  in.first_sample = w;
   in.sample_time = data.sample_time;
   in.u_unit = u_unit;
   in.y_unit = y_unit;

@@ -7,6 +7,7 @@
 #include "framework/core/parallel_jobs.hpp"
 #include "framework/core/text.hpp"
 #include "framework/discovery/diagnosis.hpp"
+#include "framework/io/json_number.hpp"
 
 namespace hystbench {
 namespace {
@@ -89,13 +90,13 @@ std::string NestingRefit::sentence() const {
 
 nlohmann::json to_json(const std::vector<TriedSubModel>& tried) {
   nlohmann::json j = nlohmann::json::array();
-  for (const auto& t : tried) j.push_back({{"model", t.model}, {"sse", t.sse}});
+  for (const auto& t : tried) j.push_back({{"model", t.model}, {"sse", number_or_null(t.sse)}});
   return j;
 }
 
 std::vector<TriedSubModel> tried_sub_models_from_json(const nlohmann::json& j) {
   std::vector<TriedSubModel> out;
-  for (const auto& t : j) out.push_back({t.at("model").get<std::string>(), t.at("sse").get<double>()});
+  for (const auto& t : j) out.push_back({t.at("model").get<std::string>(), number_or_inf(t.at("sse"))});
   return out;
 }
 
@@ -104,9 +105,9 @@ nlohmann::json to_json(const std::vector<NestingRefit>& refits) {
   for (const auto& n : refits)
     j.push_back({{"model", n.model},
                  {"from", n.from},
-                 {"sse_before", n.sse_before},
-                 {"sse_from", n.sse_from},
-                 {"sse_after", n.sse_after},
+                 {"sse_before", number_or_null(n.sse_before)},
+                 {"sse_from", number_or_null(n.sse_from)},
+                 {"sse_after", number_or_null(n.sse_after)},
                  {"sentence", n.sentence()}});
   return j;
 }
@@ -115,8 +116,8 @@ std::vector<NestingRefit> nesting_refits_from_json(const nlohmann::json& j) {
   std::vector<NestingRefit> out;
   for (const auto& n : j)
     out.push_back({n.at("model").get<std::string>(), n.at("from").get<std::string>(),
-                   n.at("sse_before").get<double>(), n.at("sse_from").get<double>(),
-                   n.at("sse_after").get<double>()});
+                   number_or_inf(n.at("sse_before")), number_or_inf(n.at("sse_from")),
+                   number_or_inf(n.at("sse_after"))});
   return out;
 }
 
@@ -134,7 +135,12 @@ Pruned prune(FitResult current, const std::string& keep, const ModelData& data, 
     const auto preferred = best_removal(p.fit, r, data, [](std::size_t) { return true; });
     if (preferred && reasons[*preferred]) note_held(p.held, r.effects[*preferred], *reasons[*preferred]);
     const auto removal = best_removal(p.fit, r, data, [&](std::size_t i) { return !reasons[i]; });
-    if (!removal) return p;
+    if (!removal) {
+      // A reason of an earlier round may have lapsed (its rival went) and
+      // the effect gone since: only what stayed was kept.
+      std::erase_if(p.held, [&](const HeldEffect& h) { return !p.fit.model.has(h.effect); });
+      return p;
+    }
     if (fit.status) fit.status("pruned " + r.effects[*removal]);
     p.removed.push_back(r.effects[*removal]);
     p.fit = *r.fits[*removal];

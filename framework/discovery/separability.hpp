@@ -4,9 +4,9 @@
 // rate-independent loop and a linear lag draw the same ellipse, and at one
 // amplitude a saturation and an asymmetry bend the same loop. When the
 // record does not excite what separates a pair, a fit that prefers one of
-// them says nothing about the physics, so discovery neither prunes a start
-// effect nor credits an addition on that evidence, and says what to record
-// instead (docs/discovery.md, "What the record can tell apart").
+// them says nothing about the physics, so discovery prunes no start effect
+// on that evidence, marks an addition's evidence with it, and says what to
+// record instead (docs/discovery.md, "What the record can tell apart").
 #include <string>
 #include <vector>
 
@@ -17,8 +17,9 @@ namespace hystbench {
 struct Inseparable {
   std::string effect, rival;
   ExcitationNeed need = ExcitationNeed::SeveralFrequencies;
-  // "The record cannot tell hysteresis from msd: it holds one frequency
-  // (1 Hz), and either can carry the other's role there; record …"
+  // "The record cannot tell hysteresis from msd: either can carry the
+  // other's role unless the record holds several frequencies, and this one
+  // holds one frequency (1 Hz). To tell them apart, record …"
   std::string sentence(const ExcitationContent& e) const;
 };
 
