@@ -54,6 +54,21 @@ TEST(FeedbackHysteresis, DeclaresMsdParameterNamesAndExtendsMsd) {
   EXPECT_TRUE(m.bounds().contains(m.neutral()));
 }
 
+TEST(FeedbackHysteresis, WithNoLoopItIsReadAsASpringNotHysteresis) {
+  const auto& reading = EffectRegistry::instance().find("feedback_hysteresis", "test").reading;
+  ASSERT_TRUE(reading);
+  const auto read = [&](double alpha, double bg, double bd) {
+    const std::vector<double> p = {0.01, 0.1, alpha, bg, bd};
+    return reading(p);
+  };
+  // dz/dy grows with |z| when β·δ < 0: the stiffness hardens.
+  EXPECT_NE(read(0.5, 0.16, -11.3).find("a hardening spring, not hysteresis"), std::string::npos);
+  EXPECT_NE(read(0.5, 0.0, 2.0).find("a softening spring, not hysteresis"), std::string::npos);
+  EXPECT_NE(read(0.5, 0.0, 0.0).find("a linear spring"), std::string::npos);
+  EXPECT_EQ(read(0.5, 1.0, 0.5), "");   // a loop: the name says it
+  EXPECT_EQ(read(0.0, 0.0, -2.0), "");  // no hysteretic force at all
+}
+
 TEST(FeedbackHysteresis, StepResponseAtZeroAlphaMatchesAnalyticSecondOrder) {
   const double ts = 1e-3;
   const Eigen::Index n = 3000;

@@ -7,7 +7,7 @@
 //                                                          radius play_radius·max|u|, from 0
 //   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³           a stiffness that grows with amplitude,
 //                   + drive_stiffness·|w|·x = w            and one that grows with the drive
-//   output        y = x + noise
+//   output        y = x + root_gain·sign(x)·√|x| + noise  a sensor law steeper than linear near 0
 //
 // ω = 2π/period. The ODE is integrated by RK4 with 20 sub-steps per sample,
 // the drive linear between samples; u' is the backward difference of u.
@@ -32,6 +32,7 @@ struct System {
   double play_gain = 0.0;
   double play_radius = 0.25;      // share of max |u|
   double drive_stiffness = 0.0;   // per unit of |w|
+  double root_gain = 0.0;  // units of y^(1/2)
   double noise = 0.01;     // sd, units of y
 };
 
@@ -92,7 +93,7 @@ inline Measurement simulate(const System& s, const Eigen::VectorXd& u, double ts
   double x = 0.0, v = 0.0;
   for (Eigen::Index k = 0; k < n; ++k) {
     m.t[k] = double(k) * ts;
-    m.y[k] = x + noise(rng);
+    m.y[k] = x + s.root_gain * std::copysign(std::sqrt(std::abs(x)), x) + noise(rng);
     if (k + 1 == n) break;
     for (int i = 0; i < kSub; ++i) {
       const auto drive = [&](double frac) { return w[k] + (w[k + 1] - w[k]) * (double(i) + frac) / kSub; };

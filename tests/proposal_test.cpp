@@ -79,13 +79,22 @@ TEST(ForwardRegression, HeldOutRowsRefuseAColumnThatOnlyFitsTheEstimationNoise) 
   EXPECT_EQ(r.refused.column, 1);
 }
 
+// The library's term of that text; a failure (and a stand-in term) when there is none.
+CandidateTerm library_term(const std::vector<CandidateTerm>& library, const std::string& text) {
+  const auto t = std::find_if(library.begin(), library.end(), [&](const CandidateTerm& c) { return c.text() == text; });
+  if (t != library.end()) return *t;
+  ADD_FAILURE() << "no term " << text << " in the library";
+  return {};
+}
+
 TEST(TermLibrary, HoldsBothParitiesOfEveryPowerAtEveryStage) {
   const auto library = term_library(3);
-  // 24 terms of one signal and its rate for each of u, v, w, x, y; 3 play
-  // operators; 6 pairs of signals × 4 signal-or-rate choices × 4 parities.
-  EXPECT_EQ(library.size(), 5u * 24u + 3u + 96u);
-  EXPECT_EQ(term_library(6).size(), 5u * 84u + 3u + 96u);
-  EXPECT_EQ(term_library(1).size(), 5u * 4u + 3u);  // no products below degree 2
+  // 24 terms of one signal and its rate for each of u, v, w, x, y; both
+  // parities of the square root of u, v, x and y; 3 play operators; 6 pairs
+  // of signals × 4 signal-or-rate choices × 4 parities.
+  EXPECT_EQ(library.size(), 5u * 24u + 8u + 3u + 96u);
+  EXPECT_EQ(term_library(6).size(), 5u * 84u + 8u + 3u + 96u);
+  EXPECT_EQ(term_library(1).size(), 5u * 4u + 8u + 3u);  // no products below degree 2
   int cubes = 0;
   for (const auto& t : library)
     if (t.stage == TermStage::Dynamics && t.factors.size() == 1 && !t.factors[0].rate && t.factors[0].power == 3) {
@@ -99,15 +108,14 @@ TEST(TermLibrary, HoldsBothParitiesOfEveryPowerAtEveryStage) {
   EXPECT_EQ(odd_square.degree(), 3);
   EXPECT_DOUBLE_EQ(odd_square.factors[0].value(-2.0) * odd_square.factors[1].value(-3.0), -12.0);
   EXPECT_DOUBLE_EQ((TermFactor{TermSignal::Output, false, 3, false}.value(-2.0)), 8.0);
+  const CandidateTerm root = library_term(library, "sign(y)·√|y|");
+  EXPECT_EQ(root.stage, TermStage::Output);
+  EXPECT_TRUE(root.has_root() && root.of_one_signal());
+  EXPECT_EQ(root.degree(), 1);
+  EXPECT_DOUBLE_EQ(root.factors[0].value(-4.0), -2.0);
+  EXPECT_DOUBLE_EQ(library_term(library, "√|x|").factors[0].value(-9.0), 3.0);
+  EXPECT_EQ(root.factors[0].exponent(), 0.5);
   EXPECT_EQ(rate_of(Eigen::Vector3d(1.0, 3.0, 2.0), 0.5), Eigen::Vector3d(0.0, 4.0, -2.0));  // none before the record
-}
-
-// The library's term of that text; a failure (and a stand-in term) when there is none.
-CandidateTerm library_term(const std::vector<CandidateTerm>& library, const std::string& text) {
-  const auto t = std::find_if(library.begin(), library.end(), [&](const CandidateTerm& c) { return c.text() == text; });
-  if (t != library.end()) return *t;
-  ADD_FAILURE() << "no term " << text << " in the library";
-  return {};
 }
 
 TEST(TermLibrary, ProductsAcrossTheChainEnterWhereTheirLaterSignalLives) {
@@ -182,6 +190,11 @@ TEST(EffectSource, NamesTheTermAndRefusesAForceWithoutMsd) {
         }
       },
       InputError);
+  ProposedTerm root = t;
+  root.term = {TermStage::Output, {{TermSignal::Output, false, 1, true, 0.0, true}}};
+  const std::string root_source = proposed_effect_source(root, {"orifice", "data.csv", "msd"});
+  EXPECT_NE(root_source.find("factor(a, 1, true, true)"), std::string::npos);  // sign(y)·√|y|
+  EXPECT_NE(root_source.find("\"normalised units\""), std::string::npos);   // c has a half power of y
   EXPECT_THROW(check_effect_name("msd"), InputError);
   EXPECT_THROW(check_effect_name("Bad-Name"), InputError);
 }
@@ -260,6 +273,18 @@ TEST(Proposal, PlantedDriveDependentStiffnessIsProposedAsAProductAcrossTheChain)
   EXPECT_EQ(p.terms[0].term.text(), "|v|·x");
   EXPECT_EQ(p.terms[0].term.stage, TermStage::Dynamics);
   EXPECT_LT(p.terms[0].coefficient, 0.0);  // a restoring force
+  EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
+}
+
+TEST(Proposal, PlantedSquareRootSensorLawIsProposedAtTheOutput) {
+  planted::System s;
+  s.root_gain = 0.1;
+  const PlantedFit f = fit_planted(s, "msd");
+  const Proposal p = propose_terms(f.model, f.x, f.data);
+  ASSERT_FALSE(p.terms.empty());
+  EXPECT_EQ(p.terms[0].term.text(), "sign(y)·√|y|");
+  EXPECT_EQ(p.terms[0].term.stage, TermStage::Output);
+  EXPECT_GT(p.terms[0].coefficient, 0.0);
   EXPECT_LT(p.rmse_heldout_after, 1.2 * s.noise);
 }
 

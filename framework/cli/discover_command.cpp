@@ -45,10 +45,14 @@ void print_step(const Ladder& ladder, const std::string& unit) {
             << "; complete: " << (d.completeness.complete ? "yes" : "no") << std::endl;
 }
 
+// What the record cannot tell apart, and what the final effects are where
+// their names would mislead.
 void print_what_the_record_cannot_tell(const Ladder& ladder) {
   const ExcitationContent& e = ladder.diagnoses.back().where.excitation;
   std::cout << e.summary() << "\n";
   for (const auto& p : inseparable_pairs(ladder.final_effects(), e)) std::cout << p.sentence(e) << "\n";
+  for (const auto& effect : ladder.diagnoses.back().check.effects)
+    if (!effect.reading.empty()) std::cout << effect.reading << "\n";
 }
 
 void run_discover(DiscoverCommandOptions& o) {

@@ -101,6 +101,7 @@ Candidate judge_candidate(const std::string& effect, const FitResult& r, const D
                                  signature_in(current.where.signatures, effect),
                                  current.errors, c.after, c.delta_bic, c.significant, o.y_unit);
   if (!shared.empty()) c.evidence += " Not counted: " + shared + ".";
+  if (const std::string reading = c.check.reading(effect); !reading.empty()) c.evidence += " " + reading;
   const ExcitationContent& excitation = current.where.excitation;
   for (const auto& p : inseparable_from(effect, current.model.effects(), excitation))
     c.evidence += " " + p.sentence(excitation);

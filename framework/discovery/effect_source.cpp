@@ -60,8 +60,15 @@ StageForm stage_form(const CandidateTerm& t) {
   return {"Output", "?", 0, 1, kStageInput, "the model output", "y_model"};
 }
 
-// The physical unit of c: the powers of y and u, and seconds per rate.
+// The physical unit of c: the powers of y and u, and seconds per rate. A
+// root gives c a half power, which EffectParam cannot state: c is then
+// reported in normalised units.
 void unit_powers(const CandidateTerm& t, int& u_power, int& y_power, std::string& unit) {
+  if (t.has_root()) {
+    u_power = y_power = 0;
+    unit = "normalised units";
+    return;
+  }
   const StageForm f = stage_form(t);
   const int degree = t.degree();
   u_power = f.u_power;
@@ -90,16 +97,18 @@ constexpr const char* kCommon = R"src(// Proposed from data by `hystbench propos
 
 namespace {
 
-// |a|^power, times sign(a) when odd.
-double factor(double a, int power, bool odd) {
+// |a|^power (√|a| when root), times sign(a) when odd.
+double factor(double a, int power, bool odd, bool root = false) {
   double m = 1.0;
-  for (int i = 0; i < power; ++i) m *= std::abs(a);
+  if (root && power > 0) m = std::sqrt(std::abs(a));
+  else
+    for (int i = 0; i < power; ++i) m *= std::abs(a);
   if (odd && power > 0) m = a < 0 ? -m : (a > 0 ? m : 0.0);
   return m;
 }
 
 double term(double a, double a_rate) {
-  return factor(a, @P@, @P_ODD@) * factor(a_rate, @Q@, @Q_ODD@);
+  return factor(a, @P@, @P_ODD@@P_ROOT@) * factor(a_rate, @Q@, @Q_ODD@);
 }
 
 // Residual signature: the residual follows the term, built from @VIEW_SIGNAL@.
@@ -288,6 +297,7 @@ std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceCont
       {"@SE@", format_number("%.2g", t.standard_error)},
       {"@P@", std::to_string(a.power)},
       {"@P_ODD@", a.odd ? "true" : "false"},
+      {"@P_ROOT@", a.root ? ", true" : ""},
       {"@Q@", std::to_string(rate.power)},
       {"@Q_ODD@", rate.odd ? "true" : "false"},
       {"@A_DECL@", f.a_decl},

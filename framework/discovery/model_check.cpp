@@ -7,6 +7,7 @@
 #include "framework/discovery/parameter_uncertainty.hpp"
 #include "framework/discovery/resonance.hpp"
 #include "framework/io/json_number.hpp"
+#include "framework/model/effect.hpp"
 
 namespace hystbench {
 namespace {
@@ -47,6 +48,14 @@ std::vector<FittedParameter> fitted_parameters(const Model& model, const Eigen::
   return out;
 }
 
+// "As fitted, <effect> <what its reading says>.", or "".
+std::string effect_reading(const std::string& effect, const std::vector<double>& p) {
+  const auto& info = EffectRegistry::instance().find(effect, "effect");
+  if (!info.reading) return "";
+  const std::string r = info.reading(p);
+  return r.empty() ? "" : "As fitted, " + effect + " " + r + ".";
+}
+
 }  // namespace
 
 bool ModelCheck::neutral(const std::string& effect) const {
@@ -55,9 +64,16 @@ bool ModelCheck::neutral(const std::string& effect) const {
   return false;
 }
 
+std::string ModelCheck::reading(const std::string& effect) const {
+  for (const auto& e : effects)
+    if (e.effect == effect) return e.reading;
+  return "";
+}
+
 std::vector<std::string> ModelCheck::warnings() const {
   std::vector<std::string> out;
   for (const auto& e : effects) {
+    if (!e.reading.empty()) out.push_back(e.reading);
     if (e.neutral)
       out.push_back(e.effect + " does nothing within noise: every parameter lies within " +
                     format_number("%.0f", kNeutralSd) + " standard errors of its neutral value.");
@@ -79,10 +95,13 @@ ModelCheck check_model(const Model& model, const Eigen::VectorXd& x, const Model
   c.parameters = fitted_parameters(model, x, data, u, model.physical_units(u_unit, y_unit));
   for (const auto& effect : model.effects()) {
     EffectCheck e{effect, true, {}};
+    std::vector<double> p;
     for (int i : model.parameters_of(effect)) {
       e.neutral = e.neutral && u.available && near_neutral(model.parameter(i), x[i], u.sd[i]);
       if (c.parameters[i].at_bound) e.at_bound.push_back(c.parameters[i].name);
+      p.push_back(x[i]);
     }
+    e.reading = effect_reading(effect, p);
     c.effects.push_back(e);
     if (auto shared = shared_resonance(model, x, data.sample_time, effect); !shared.empty())
       c.shared_modes.push_back(std::move(shared));
@@ -107,7 +126,7 @@ nlohmann::json ModelCheck::to_json() const {
   }
   nlohmann::json effs = nlohmann::json::array();
   for (const auto& e : effects)
-    effs.push_back({{"effect", e.effect}, {"neutral", e.neutral}, {"at_bound", e.at_bound}});
+    effs.push_back({{"effect", e.effect}, {"neutral", e.neutral}, {"at_bound", e.at_bound}, {"reading", e.reading}});
   nlohmann::json j = {{"parameters", params}, {"effects", effs}, {"warnings", warnings()}};
   if (!correlated_a.empty())
     j["most_correlated"] = {{"a", correlated_a}, {"b", correlated_b}, {"correlation", correlation}};

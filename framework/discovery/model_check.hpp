@@ -27,6 +27,10 @@ struct EffectCheck {
   std::string effect;
   bool neutral = false;  // every parameter within 2 sd (or 1e-6 of its range) of neutral
   std::vector<std::string> at_bound;
+  // What the fitted effect is where its name would mislead
+  // (EffectInfo::reading): "As fitted, feedback_hysteresis has no loop ...: a
+  // hardening spring, not hysteresis." Empty when the name says it.
+  std::string reading = {};
 };
 
 struct ModelCheck {
@@ -37,7 +41,10 @@ struct ModelCheck {
   double correlation = 0.0;
 
   bool neutral(const std::string& effect) const;
-  // Plain sentences: neutral effects, parameters on bounds, a strong trade-off.
+  // The effect's reading, "" when it has none.
+  std::string reading(const std::string& effect) const;
+  // Plain sentences: what effects are as fitted, neutral effects, parameters
+  // on bounds, a strong trade-off.
   std::vector<std::string> warnings() const;
   nlohmann::json to_json() const;
 };

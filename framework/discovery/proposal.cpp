@@ -200,7 +200,8 @@ nlohmann::json factors_json(const CandidateTerm& t) {
   for (const TermFactor& f : t.factors) {
     TermFactor signal = f;
     signal.rate = false;  // the signal's own symbol; "rate" says whether the factor is of its rate
-    nlohmann::json j = {{"signal", signal.symbol()}, {"rate", f.rate}, {"power", f.power}, {"odd", f.odd}};
+    nlohmann::json j = {{"signal", signal.symbol()}, {"rate", f.rate}, {"odd", f.odd}};
+    j["power"] = f.root ? nlohmann::json(f.exponent()) : nlohmann::json(f.power);
     if (f.signal == TermSignal::Play) j["radius"] = f.radius;
     out.push_back(j);
   }

@@ -81,7 +81,9 @@ std::string term_stage_name(TermStage stage) { return row(stage).name; }
 
 double TermFactor::value(double a) const {
   double m = 1.0;
-  for (int i = 0; i < power; ++i) m *= std::abs(a);
+  if (root && power > 0) m = std::sqrt(std::abs(a));
+  else
+    for (int i = 0; i < power; ++i) m *= std::abs(a);
   if (odd && power > 0) m = a < 0 ? -m : (a > 0 ? m : 0.0);
   return m;
 }
@@ -95,6 +97,7 @@ std::string TermFactor::symbol() const {
 std::string TermFactor::text() const {
   if (power == 0) return "";
   const std::string a = symbol();
+  if (root) return (odd ? "sign(" + a + ")·" : std::string()) + "√|" + a + "|";
   const bool natural = odd == (power % 2 == 1);  // a^p has this parity already
   if (natural) return a + superscript(power);
   if (power % 2 == 1) return "|" + a + "|" + superscript(power);
@@ -116,6 +119,10 @@ int CandidateTerm::degree() const {
   int d = 0;
   for (const TermFactor& f : factors) d += f.power;
   return d;
+}
+
+bool CandidateTerm::has_root() const {
+  return std::any_of(factors.begin(), factors.end(), [](const TermFactor& f) { return f.root; });
 }
 
 bool CandidateTerm::of_one_signal() const {
@@ -155,6 +162,8 @@ std::vector<CandidateTerm> term_library(int degree) {
   for (TermStage stage : {TermStage::Static, TermStage::Dynamics, TermStage::Output, TermStage::Input})
     single_signal_terms(row(stage).signal, stage, degree, out);
   single_signal_terms(TermSignal::StaticOutput, TermStage::Static, degree, out);
+  for (TermStage stage : {TermStage::Static, TermStage::Dynamics, TermStage::Output, TermStage::Input})
+    for (bool odd : {true, false}) out.push_back({stage, {{row(stage).signal, false, 1, odd, 0.0, true}}});
   for (double radius : {0.10, 0.25, 0.50}) out.push_back({TermStage::Static, {{TermSignal::Play, false, 1, true, radius}}});
   if (degree >= 2) product_terms(out);
   return out;

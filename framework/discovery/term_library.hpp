@@ -22,7 +22,10 @@
 //     estimation samples (the state of a backlash-like hysteresis the chain
 //     lacks);
 //   - products of two signals of different places (v, w, x, y, or their
-//     rates), each to the first power, both parities: degree 2.
+//     rates), each to the first power, both parities: degree 2;
+//   - the square root √|a| of each block's own signal, both parities
+//     (sign(a)·√|a| and √|a|): the outflow of a tank through an orifice
+//     (Torricelli), and any law that grows slower than linear. Degree 1.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -41,16 +44,20 @@ std::string term_stage_name(TermStage stage);
 enum class TermSignal { Input, Drive, StaticOutput, Resonance, Output, Play };
 
 // One factor: |a|^power · sign(a) when odd, |a|^power when not, with a the
-// signal (or its rate).
+// signal (or its rate); √|a| in place of |a|^power when `root`.
 struct TermFactor {
   TermSignal signal = TermSignal::Drive;
   bool rate = false;
-  int power = 0;  // 0: the factor is 1
+  int power = 0;  // 0: the factor is 1; 1 for a root
   bool odd = false;
   double radius = 0.0;  // play operators: the radius as a share of max |v|
+  bool root = false;    // |a|^(1/2); its power is 1
+
+  // The exponent of |a|: power, or 0.5 for a root.
+  double exponent() const { return root ? 0.5 : double(power); }
 
   double value(double a) const;
-  // "v", "|v|", "v²", "v·|v|", "|v'|³", "play(v, 25 %)", ...
+  // "v", "|v|", "v²", "v·|v|", "|v'|³", "play(v, 25 %)", "√|y|", "sign(y)·√|y|", ...
   std::string text() const;
   // "u", "v", "w", "x", "y" or "play(v, 25 %)"; with "'" for a rate.
   std::string symbol() const;
@@ -65,7 +72,11 @@ struct CandidateTerm {
   // "v·|v'|", "x³", "v·x'", ...
   std::string text() const;
   Model::Entry entry() const;
+  // The sum of the factors' powers; a root counts 1.
   int degree() const;
+  // True when a factor is a root: the term's coefficient has a fractional
+  // unit, so it is reported in normalised units.
+  bool has_root() const;
   // True when the term is f(a)·g(a') of one signal of its own block and
   // that signal's rate (u; v or w; x; y): the form a generated effect
   // (effect_source.hpp) has.
@@ -77,8 +88,9 @@ struct CandidateTerm {
 
 // Every term of the library, in a fixed order: first f(a)·g(a') of the
 // stages' own signals (static v, dynamics x, output y, input u; each by
-// degree, the power of the signal, parities), then w, the play operators
-// and the products of two signals. `degree` (1 to 6) bounds f·g; the
+// degree, the power of the signal, parities), then w, the square roots of
+// the blocks' own signals, the play operators and the products of two
+// signals. `degree` (1 to 6) bounds f·g; the
 // products need degree ≥ 2.
 std::vector<CandidateTerm> term_library(int degree);
 

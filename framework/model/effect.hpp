@@ -151,6 +151,11 @@ struct EffectInfo {
   // what tells them apart (hysteresis and a linear lag at one frequency).
   // Either side may declare the pair.
   std::vector<EffectRival> rivals;
+  // What the fitted parameters (normalised units, declared order) make of
+  // the effect where its name would mislead: a Bouc-Wen force with no loop
+  // is a spring, not hysteresis. Returns a sentence, or "" when the name
+  // says it. Optional.
+  std::function<std::string(std::span<const double>)> reading = nullptr;
   // Filled in by HYSTBENCH_EFFECT.
   std::function<std::unique_ptr<Effect>()> create = nullptr;
 };

@@ -37,6 +37,7 @@
 #include <numbers>
 #include <vector>
 
+#include "framework/core/text.hpp"
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
 #include "framework/model/input_hold.hpp"
@@ -64,6 +65,25 @@ constexpr double kDivergence = 1e6;
 SignatureValue output_loop_correlation(const ResidualView& r) {
   const LoopCorrelation loop = loop_correlation(r.e, r.y_model);
   return {loop.correlation, {{"width", loop.width}}};
+}
+
+// β·γ sets the loop: with y' > 0 and z > 0, dz/dy = a − (bg + bd)·z going
+// up and a − (bd − bg)·z coming down, so the branches part by 2·bg·z. With
+// bg small beside bd, z is one function of y: a nonlinear spring whose
+// stiffness dz/dy grows with |z| when bd < 0 (hardening) and falls when
+// bd > 0 (softening). A loop narrower than a tenth of that change is not
+// told as hysteresis.
+constexpr double kLoopShare = 0.1;
+
+std::string loop_reading(std::span<const double> p) {
+  const double a = p[2], bg = p[3], bd = p[4];
+  if (a == 0.0) return "";
+  const std::string values = "β·γ = " + format_number("%.3g", bg) + ", β·δ = " + format_number("%.3g", bd) +
+                             " (normalised)";
+  if (std::abs(bg) > kLoopShare * std::abs(bd)) return "";
+  if (bd == 0.0) return "has no loop and a constant stiffness (" + values + "): a linear spring, not hysteresis";
+  return "has no loop (" + values + ", |β·γ| under a tenth of |β·δ|): a " +
+         (bd < 0.0 ? "hardening" : "softening") + " spring, not hysteresis";
 }
 
 class FeedbackHysteresis : public Effect {
@@ -96,6 +116,7 @@ class FeedbackHysteresis : public Effect {
                    "the residual correlates with a hysteresis loop driven by the model output, "
                    "the stop operator ŷ − play_r(ŷ) with r = {width} of its half range "
                    "(r = {value})"};
+    i.reading = loop_reading;
     return i;
   }
 

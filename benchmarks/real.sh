@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Discovery on public measured benchmarks, scored the way their literature
+# scores them (docs/discovery.md, "Measured benchmarks"). For each benchmark:
+#   discover/     discover from msd on the estimation record, with the
+#                 benchmark's warm-up (the first samples initialise the model
+#                 and are never scored)
+#   proposals/    where the ladder ends beyond the catalog: propose on its
+#                 final fit; proposals/effect/ holds the first term as a plugin
+#   with_effect/  discover from the final model offered only that effect
+#   test_*/       compare of the final fit on each official test record
+# then <name>/README.md, README.md and summary.csv (one row per benchmark and
+# test record; RMSE after the warm-up, in the benchmark's unit).
+#
+#   benchmarks/real.sh DATA_ROOT [OUT_DIR]
+#
+# DATA_ROOT holds silverbox/ and cascaded_tanks/, each with estimation.csv and
+# its test records (columns t, u, y; the split of the nonlinear_benchmarks
+# loader; see each folder's README). OUT_DIR defaults to results/real.
+# BENCHMARKS="cascaded_tanks" runs one; MAX_STEPS (default 8) bounds the
+# effects discover adds; BUILD_DIR (default build) holds hystbench. Needs
+# python3 to read the JSON results and cmake to build a proposed effect.
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+usage="usage: benchmarks/real.sh DATA_ROOT [OUT_DIR]"
+[[ $# -ge 1 && $1 != -h && $1 != --help ]] || { echo "$usage" >&2; exit 2; }
+data_root="$(cd "$1" 2>/dev/null && pwd)" || { echo "real.sh: no folder $1; $usage" >&2; exit 2; }
+out="${2:-$repo/results/real}"
+build="$(cd "${BUILD_DIR:-$repo/build}" && pwd)"
+exe="$build/hystbench"
+max_steps="${MAX_STEPS:-8}"
+[[ -x "$exe" ]] || { echo "real.sh: $exe is missing; build hystbench first" >&2; exit 2; }
+command -v python3 >/dev/null || { echo "real.sh: python3 is needed" >&2; exit 2; }
+
+# name  warm-up  test records
+declare -A warmup=([silverbox]=50 [cascaded_tanks]=5)
+declare -A tests=([silverbox]="test_multisine test_arrow_full test_arrow_no_extrapolation" [cascaded_tanks]="test")
+benchmarks=${BENCHMARKS:-silverbox cascaded_tanks}
+for b in $benchmarks; do
+  [[ -n ${warmup[$b]:-} ]] || { echo "real.sh: unknown benchmark $b (silverbox, cascaded_tanks)" >&2; exit 2; }
+  for f in estimation ${tests[$b]}; do
+    [[ -f "$data_root/$b/$f.csv" ]] || { echo "real.sh: $data_root/$b/$f.csv is missing" >&2; exit 2; }
+  done
+done
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+
+# Where the ladder ends beyond the catalog (completeness kind), the first
+# proposed term as an effect, and discovery from the final model offered it.
+# Prints the fit to score.
+with_proposal() {
+  local dir=$1 data=$2 kind
+  kind=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["completeness"]["kind"])' \
+         "$dir/discover/ladder.json")
+  if [[ $kind != beyond_catalog ]]; then echo "$dir/discover/fit.json"; return; fi
+  "$exe" propose --data "$data" --fit "$dir/discover/fit.json" --out "$dir/proposals" --force >"$dir/proposals.log"
+  if [[ ! -f "$dir/proposals/effect/CMakeLists.txt" ]]; then echo "$dir/discover/fit.json"; return; fi
+  cmake -S "$dir/proposals/effect" -B "$dir/effect-build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build" >/dev/null
+  cmake --build "$dir/effect-build" >/dev/null
+  local start
+  start=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["final_model"])' "$dir/discover/ladder.json")
+  "$exe" discover --data "$data" --start "$start" --plugin "$dir/effect-build/proposed_term.so" \
+    --candidates proposed_term --max-steps 1 --warmup "${warmup[$b]}" --input-unit V --output-unit V \
+    --out "$dir/with_effect" --force >"$dir/with_effect.log"
+  echo "$dir/with_effect/fit.json"
+}
+
+run_benchmark() {
+  local b=$1 dir="$out/$1" data="$data_root/$1/estimation.csv"
+  rm -rf "$dir" && mkdir -p "$dir"
+  local t0=$SECONDS
+  "$exe" discover --data "$data" --start msd --warmup "${warmup[$b]}" --max-steps "$max_steps" \
+    --input-unit V --output-unit V --out "$dir/discover" --force | tee "$dir/discover.log" >&2
+  echo "discover_seconds=$((SECONDS - t0))" >"$dir/timings.txt"
+  t0=$SECONDS
+  local fit
+  fit=$(with_proposal "$dir" "$data")
+  echo "proposal_seconds=$((SECONDS - t0))" >>"$dir/timings.txt"
+  echo "scored_fit=${fit#"$dir/"}" >>"$dir/timings.txt"
+  for t in ${tests[$b]}; do
+    "$exe" compare --data "$data_root/$b/$t.csv" --fit "$fit" --out "$dir/$t" --force >"$dir/$t.log"
+  done
+  # What is committed: reports, JSON, gnuplot scripts and PNG figures.
+  rm -rf "$dir/effect-build"
+  find "$dir" \( -name '*.pdf' -o -name '*.svg' -o -name '*.dat' -o -name fit_model.csv -o -name gnuplot.log \
+                 -o -name checkpoint.json \) -delete
+}
+
+for b in $benchmarks; do
+  echo "== $b" >&2
+  run_benchmark "$b"
+done
+python3 "$repo/benchmarks/real_summary.py" "$out" $benchmarks
+echo "wrote $out/summary.csv and $out/README.md" >&2

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Tables of benchmarks/real.sh: summary.csv, README.md and <benchmark>/README.md.
+
+    real_summary.py OUT_DIR BENCHMARK...
+
+RMSE is read from each test record's compare metrics.json ("all": every
+sample after the warm-up, simulated from u alone) and given in the
+benchmark's unit. The published numbers are those of the data's own
+README files (nonlinear_benchmarks split).
+"""
+import csv
+import json
+import os
+import sys
+
+# unit, factor from V, published best per test record (value, source), linear anchor per test record.
+BENCHMARKS = {
+    "silverbox": {
+        "title": "Silverbox (electronic Duffing oscillator, measured)",
+        "unit": "mV",
+        "factor": 1000.0,
+        "published": {
+            "test_arrow_full": (0.26, "Paduart et al., Automatica 46(4) 2010, PNLSS (figure as commonly cited)"),
+        },
+        "anchor": {"test_multisine": 7.8, "test_arrow_full": 15.6, "test_arrow_no_extrapolation": 7.1},
+        "anchor_name": "ARX(2,2) by least squares, simulated",
+        "goal": ("test_arrow_full", 0.3),
+    },
+    "cascaded_tanks": {
+        "title": "Cascaded tanks (water levels with overflow, measured)",
+        "unit": "V",
+        "factor": 1.0,
+        "published": {
+            "test": (0.18, "Rogers et al. 2017, grey box with an overflow model (Forgione & Piga, Eur. J. Control 59, 2021, table CTS)"),
+        },
+        "anchor": {"test": 0.65},
+        "anchor_name": "ARX(3,3) by least squares, simulated",
+        "goal": ("test", 0.34),
+    },
+}
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def timings(directory):
+    with open(os.path.join(directory, "timings.txt")) as f:
+        return dict(line.strip().split("=", 1) for line in f if "=" in line)
+
+
+def scored_model(directory, t):
+    fit = load(os.path.join(directory, t["scored_fit"]))
+    return ",".join(e["name"] for e in fit["effects"])
+
+
+def rows_of(out, name):
+    spec = BENCHMARKS[name]
+    directory = os.path.join(out, name)
+    t = timings(directory)
+    model = scored_model(directory, t)
+    fit = load(os.path.join(directory, t["scored_fit"]))
+    rows = []
+    for test in sorted(d for d in os.listdir(directory) if d.startswith("test")):
+        metrics_path = os.path.join(directory, test, "metrics.json")
+        if not os.path.isfile(metrics_path):
+            continue
+        rmse = load(metrics_path)["all"]["rmse"] * spec["factor"]
+        best, source = spec["published"].get(test, (None, ""))
+        rows.append({"benchmark": name, "test": test, "model": model, "rmse": rmse, "unit": spec["unit"],
+                     "warmup": warmup_of(fit), "published_best": best, "published_source": source})
+    return rows, t
+
+
+def warmup_of(fit):
+    """The warm-up a fit was made with: its hold-out text ends "+warmup:N"."""
+    holdout = fit.get("holdout", "")
+    return int(holdout.split("warmup:")[1]) if "warmup:" in holdout else 0
+
+
+def number(v):
+    return "" if v is None else f"{v:.4g}"
+
+
+def benchmark_readme(out, name, rows, t):
+    spec = BENCHMARKS[name]
+    directory = os.path.join(out, name)
+    ladder = load(os.path.join(directory, "discover", "ladder.json"))
+    unit = spec["unit"]
+    lines = [f"# {spec['title']}\n",
+             "Made by `benchmarks/real.sh`. `discover` from `msd` on `estimation.csv` only, with a warm-up of "
+             f"{rows[0]['warmup'] if rows else '?'} samples (simulated, never fitted or scored), then `compare` "
+             "of the scored fit on each test record, simulated from u alone. RMSE after the warm-up, the "
+             "benchmark's own way.\n",
+             f"- Ladder: [discover/ladder.md](discover/ladder.md); final model `{ladder['final_model']}`, "
+             f"complete: {'yes' if ladder['complete'] else 'no'} ({ladder['completeness']['kind']}).",
+             f"- Scored fit: `{t['scored_fit']}` (model `{rows[0]['model'] if rows else '?'}`)."]
+    if os.path.isdir(os.path.join(directory, "proposals")):
+        lines.append("- The ladder ended beyond the catalog: [proposals/proposals.md](proposals/proposals.md), "
+                     "the generated effect in `proposals/effect/`, and discovery offered it in "
+                     "[with_effect/ladder.md](with_effect/ladder.md).")
+    lines.append(f"- Time on 2 cores: discover {t['discover_seconds']} s, proposal and its ladder "
+                 f"{t['proposal_seconds']} s.\n")
+    lines += [f"| test record | RMSE ({unit}) | {spec['anchor_name']} ({unit}) | published best ({unit}) | source |",
+              "| :-- | --: | --: | --: | :-- |"]
+    for r in rows:
+        lines.append(f"| [{r['test']}]({r['test']}/report.md) | {r['rmse']:.4g} | "
+                     f"{number(spec['anchor'].get(r['test']))} | {number(r['published_best'])} | "
+                     f"{r['published_source']} |")
+    goal_test, goal = spec["goal"]
+    reached = [r for r in rows if r["test"] == goal_test]
+    if reached:
+        verdict = "reached" if reached[0]["rmse"] <= goal else "not reached"
+        lines.append(f"\nGoal: at most {goal} {unit} on {goal_test}: {verdict} ({reached[0]['rmse']:.4g} {unit}).")
+    with open(os.path.join(directory, "README.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main():
+    out, names = sys.argv[1], sys.argv[2:]
+    all_rows = []
+    for name in names:
+        rows, t = rows_of(out, name)
+        benchmark_readme(out, name, rows, t)
+        all_rows += rows
+    summary = os.path.join(out, "summary.csv")
+    # Rows of benchmarks not run this time are kept.
+    kept = []
+    if os.path.isfile(summary):
+        with open(summary) as f:
+            kept = [r for r in csv.DictReader(f) if r["benchmark"] not in names]
+    columns = ["benchmark", "test", "model", "rmse", "unit", "warmup", "published_best", "published_source"]
+    with open(summary, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        for r in kept:
+            w.writerow(r)
+        for r in all_rows:
+            w.writerow({**r, "rmse": f"{r['rmse']:.6g}", "published_best": number(r["published_best"])})
+    with open(summary) as f:
+        table = list(csv.DictReader(f))
+    lines = ["# Measured benchmarks\n",
+             "Made by `benchmarks/real.sh DATA_ROOT`: discovery on public measured records, scored on their "
+             "official test records as the literature scores them. Each folder's README gives the ladder, the "
+             "test RMSE beside a linear anchor and the published best; `summary.csv` has one row per benchmark "
+             "and test record.\n",
+             "| benchmark | test | model | RMSE | published best |", "| :-- | :-- | :-- | --: | --: |"]
+    for r in table:
+        lines.append(f"| [{r['benchmark']}]({r['benchmark']}/README.md) | {r['test']} | `{r['model']}` | "
+                     f"{float(r['rmse']):.4g} {r['unit']} | {r['published_best'] or '–'} |")
+    with open(os.path.join(out, "README.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

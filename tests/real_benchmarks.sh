@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# benchmarks/real.sh end to end on the excerpts in tests/data/real (3 000
+# samples of Silverbox, the whole cascaded-tanks benchmark), with at most
+# two effects added: summary.csv has its columns and one row per benchmark
+# and test record, each scored after the benchmark's warm-up, in its unit;
+# every test record is simulated from u alone and beats no-model (the
+# output's own RMS about its mean), and the report of each benchmark names
+# the published best beside it. The full size: benchmarks/real.sh on the
+# complete records (docs/discovery.md, "Measured benchmarks").
+set -euo pipefail
+build_dir=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+BUILD_DIR="$build_dir" MAX_STEPS=2 "$source_dir/benchmarks/real.sh" "$source_dir/tests/data/real" "$work/real" \
+  > "$work/real.log" 2>&1 || fail "benchmarks/real.sh failed: $(tail -20 "$work/real.log")"
+
+python3 - "$work/real" "$source_dir/tests/data/real" <<'PY'
+import csv, math, os, sys
+out, data = sys.argv[1], sys.argv[2]
+def fail(msg):
+    sys.exit("FAIL: " + msg)
+with open(os.path.join(out, "summary.csv")) as f:
+    header = f.readline().strip()
+    if header != "benchmark,test,model,rmse,unit,warmup,published_best,published_source":
+        fail("summary.csv header: " + header)
+with open(os.path.join(out, "summary.csv")) as f:
+    rows = list(csv.DictReader(f))
+expected = {("silverbox", "test_multisine"), ("silverbox", "test_arrow_full"),
+            ("silverbox", "test_arrow_no_extrapolation"), ("cascaded_tanks", "test")}
+if {(r["benchmark"], r["test"]) for r in rows} != expected or len(rows) != 4:
+    fail("summary.csv rows: " + str([(r["benchmark"], r["test"]) for r in rows]))
+unit = {"silverbox": ("mV", "50", 1000.0), "cascaded_tanks": ("V", "5", 1.0)}
+for r in rows:
+    u, warmup, factor = unit[r["benchmark"]]
+    if r["unit"] != u or r["warmup"] != warmup:
+        fail(f"{r['benchmark']}/{r['test']}: unit {r['unit']}, warm-up {r['warmup']}")
+    if not r["model"]:
+        fail(f"{r['benchmark']}: no model")
+    # No model at all (the output's mean) scores the output's spread after the warm-up.
+    with open(os.path.join(data, r["benchmark"], r["test"] + ".csv")) as f:
+        y = [float(row["y"]) for row in csv.DictReader(f)][int(warmup):]
+    mean = sum(y) / len(y)
+    spread = factor * math.sqrt(sum((v - mean) ** 2 for v in y) / len(y))
+    rmse = float(r["rmse"])
+    if not (rmse < spread):
+        fail(f"{r['benchmark']}/{r['test']}: RMSE {rmse} {u} is not below the output's spread {spread:.4g}")
+best = {(r["benchmark"], r["test"]): r["published_best"] for r in rows}
+if best[("silverbox", "test_arrow_full")] != "0.26" or best[("cascaded_tanks", "test")] != "0.18":
+    fail("published numbers: " + str(best))
+for b in ("silverbox", "cascaded_tanks"):
+    text = open(os.path.join(out, b, "README.md")).read()
+    if "published best" not in text or "Goal:" not in text:
+        fail(b + "/README.md lacks the published best or the goal")
+print("real benchmarks:", [(r["benchmark"], r["test"], r["model"], r["rmse"]) for r in rows])
+PY
