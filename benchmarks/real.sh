@@ -17,17 +17,23 @@
 # its test records (columns t, u, y; the split of the nonlinear_benchmarks
 # loader; see each folder's README). OUT_DIR defaults to results/real.
 # BENCHMARKS="cascaded_tanks" runs one; MAX_STEPS (default 8) bounds the
-# effects discover adds; BUILD_DIR (default build) holds hystbench. Needs
-# python3 to read the JSON results and cmake to build a proposed effect.
+# effects discover adds; DISCOVER_OPTIONS adds options to every discover
+# (the test runs the excerpts with a smaller search budget); BUILD_DIR
+# (default build) holds hystbench. Needs python3 to read the JSON results and
+# cmake to build a proposed effect.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 usage="usage: benchmarks/real.sh DATA_ROOT [OUT_DIR]"
 [[ $# -ge 1 && $1 != -h && $1 != --help ]] || { echo "$usage" >&2; exit 2; }
-data_root="$(cd "$1" 2>/dev/null && pwd)" || { echo "real.sh: no folder $1; $usage" >&2; exit 2; }
+# Paths stay as given: the results record them, so relative ones keep the
+# machine's folders out of committed files.
+data_root=$1
+[[ -d $data_root ]] || { echo "real.sh: no folder $data_root; $usage" >&2; exit 2; }
 out="${2:-$repo/results/real}"
 build="$(cd "${BUILD_DIR:-$repo/build}" && pwd)"
 exe="$build/hystbench"
 max_steps="${MAX_STEPS:-8}"
+read -r -a discover_options <<<"${DISCOVER_OPTIONS:-}"
 [[ -x "$exe" ]] || { echo "real.sh: $exe is missing; build hystbench first" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "real.sh: python3 is needed" >&2; exit 2; }
 
@@ -42,7 +48,6 @@ for b in $benchmarks; do
   done
 done
 mkdir -p "$out"
-out="$(cd "$out" && pwd)"
 
 # Where the ladder ends beyond the catalog (completeness kind), the first
 # proposed term as an effect, and discovery from the final model offered it.
@@ -60,6 +65,7 @@ with_proposal() {
   start=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["final_model"])' "$dir/discover/ladder.json")
   "$exe" discover --data "$data" --start "$start" --plugin "$dir/effect-build/proposed_term.so" \
     --candidates proposed_term --max-steps 1 --warmup "${warmup[$b]}" --input-unit V --output-unit V \
+    ${discover_options[@]+"${discover_options[@]}"} \
     --out "$dir/with_effect" --force >"$dir/with_effect.log"
   echo "$dir/with_effect/fit.json"
 }
@@ -69,8 +75,9 @@ run_benchmark() {
   rm -rf "$dir" && mkdir -p "$dir"
   local t0=$SECONDS
   "$exe" discover --data "$data" --start msd --warmup "${warmup[$b]}" --max-steps "$max_steps" \
-    --input-unit V --output-unit V --out "$dir/discover" --force | tee "$dir/discover.log" >&2
-  echo "discover_seconds=$((SECONDS - t0))" >"$dir/timings.txt"
+    --input-unit V --output-unit V ${discover_options[@]+"${discover_options[@]}"} --out "$dir/discover" --force | tee "$dir/discover.log" >&2
+  { echo "discover_seconds=$((SECONDS - t0))"; echo "max_steps=$max_steps"
+    echo "discover_options=${DISCOVER_OPTIONS:-}"; } >"$dir/timings.txt"
   t0=$SECONDS
   local fit
   fit=$(with_proposal "$dir" "$data")

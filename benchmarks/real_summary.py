@@ -96,11 +96,19 @@ def benchmark_readme(out, name, rows, t):
              f"- Ladder: [discover/ladder.md](discover/ladder.md); final model `{ladder['final_model']}`, "
              f"complete: {'yes' if ladder['complete'] else 'no'} ({ladder['completeness']['kind']}).",
              f"- Scored fit: `{t['scored_fit']}` (model `{rows[0]['model'] if rows else '?'}`)."]
-    if os.path.isdir(os.path.join(directory, "proposals")):
+    if os.path.isdir(os.path.join(directory, "with_effect")):
         lines.append("- The ladder ended beyond the catalog: [proposals/proposals.md](proposals/proposals.md), "
                      "the generated effect in `proposals/effect/`, and discovery offered it in "
                      "[with_effect/ladder.md](with_effect/ladder.md).")
-    lines.append(f"- Time on 2 cores: discover {t['discover_seconds']} s, proposal and its ladder "
+    elif os.path.isdir(os.path.join(directory, "proposals")):
+        said = [line.strip() for line in open(os.path.join(directory, "proposals.log"))
+                if line.startswith("  1.") or line.startswith("no effect written")]
+        lines.append("- The ladder ended beyond the catalog: [proposals/proposals.md](proposals/proposals.md). "
+                     "propose said: " + " ".join(f"`{t}`" for t in said) + ".")
+    options = t.get("discover_options", "")
+    lines.append(f"- Run with `MAX_STEPS={t.get('max_steps', '?')}`" +
+                 (f" and `DISCOVER_OPTIONS=\"{options}\"`" if options else "") +
+                 f"; time on 2 cores: discover {t['discover_seconds']} s, proposal and its ladder "
                  f"{t['proposal_seconds']} s.\n")
     lines += [f"| test record | RMSE ({unit}) | {spec['anchor_name']} ({unit}) | published best ({unit}) | source |",
               "| :-- | --: | --: | --: | :-- |"]
@@ -144,7 +152,8 @@ def main():
              "Made by `benchmarks/real.sh DATA_ROOT`: discovery on public measured records, scored on their "
              "official test records as the literature scores them. Each folder's README gives the ladder, the "
              "test RMSE beside a linear anchor and the published best; `summary.csv` has one row per benchmark "
-             "and test record.\n",
+             "and test record. What the runs show, and why the goals are not met yet: "
+             "[docs/discovery.md](../../docs/discovery.md#measured-benchmarks).\n",
              "| benchmark | test | model | RMSE | published best |", "| :-- | :-- | :-- | --: | --: |"]
     for r in table:
         lines.append(f"| [{r['benchmark']}]({r['benchmark']}/README.md) | {r['test']} | `{r['model']}` | "

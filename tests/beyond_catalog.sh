@@ -32,13 +32,17 @@ noise=0.01
 seed_chain=hysteresis,asymmetry,msd,arx
 cd "$work"
 
-# Builds the generated effect of proposal folder $1 against the build tree.
+# Builds the generated effect of proposal folder $1 against the build tree and
+# checks its batched form in the model $2.
 build_effect() {
   cmake -S "$1/effect" -B "$1/effect/build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build_dir" \
         -DCMAKE_CXX_COMPILER="$core_compiler" -DCMAKE_CXX_FLAGS="$core_flags" \
         -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
   cmake --build "$1/effect/build" >/dev/null
   [[ -f "$1/effect/build/proposed_term.so" ]] || fail "the effect proposed in $1 did not build"
+  # Batched like the catalog's effects, and equal to its one-candidate values.
+  "$build_dir/tests/hystbench_lane_check" "$1/effect/build/proposed_term.so" "$2" ||
+    fail "the effect proposed in $1 is not batched, or its blocks differ from single candidates"
 }
 
 # Discovery from the model proposal $1 was made from ($3), offered only the
@@ -63,7 +67,7 @@ grep -q '"kind": "beyond_catalog"' discover/ladder.json ||
 grep -q "## Beyond the catalog" discover/ladder.md || fail "rate_gain: ladder.md has no Beyond the catalog section"
 "$hystbench" propose --data rate.csv --fit discover/fit.json --out rate > rate.txt
 grep -q "^  1\. static: v·|v'|  " rate.txt || fail "rate_gain: the first proposal is not static v·|v'|: $(cat rate.txt)"
-build_effect rate
+build_effect rate hysteresis,msd,proposed_term
 discover_with_effect rate rate.csv "$seed_chain"
 
 # Cubic stiffness.
@@ -71,7 +75,7 @@ discover_with_effect rate rate.csv "$seed_chain"
 "$hystbench" fit --data cubic.csv --model msd --out msd >/dev/null
 "$hystbench" propose --data cubic.csv --fit msd/fit.json --out cubic > cubic.txt
 grep -q "^  1\. dynamics: x³  " cubic.txt || fail "cubic_stiffness: the first proposal is not dynamics x³: $(cat cubic.txt)"
-build_effect cubic
+build_effect cubic proposed_term
 discover_with_effect cubic cubic.csv msd
 # A play operator beside the gain and a spring that stiffens with the drive:
 # terms of the library beyond one stage's signal, proposed with no effect

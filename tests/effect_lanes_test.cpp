@@ -9,55 +9,21 @@
 #include "framework/core/rng.hpp"
 #include "framework/model/model.hpp"
 #include "framework/model/model_problem.hpp"
+#include "tests/lane_record.hpp"
 
 namespace hystbench {
 namespace {
-
-// A drive with steps, a sweep and a hold-out, normalised with unit scales;
-// y is a model output plus noise so that SSEs are of realistic size.
-ModelData record(int n = 3000) {
-  Eigen::VectorXd u(n);
-  for (int k = 0; k < n; ++k) {
-    const double t = 2e-3 * k;
-    u[k] = (k / 500 % 2 ? 1.0 : -0.4) + 0.5 * std::sin(2 * std::numbers::pi * (1 + 3 * t) * t);
-  }
-  ModelData d;
-  d.u = u;
-  d.t = Eigen::VectorXd::LinSpaced(n, 0.0, 2e-3 * (n - 1));
-  d.sample_time = 2e-3;
-  Rng rng(5);
-  d.y = u;
-  for (int k = 0; k < n; ++k) d.y[k] = 0.8 * u[k] + 0.01 * rng.normal();
-  d.estimation = Eigen::VectorXd::Ones(n);
-  d.estimation.tail(n / 4).setZero();
-  return d;
-}
-
-// Candidates across the box; some at the neutral value (pass-through), at
-// the box edges, and outside the valid region (unstable ARX poles).
-Eigen::MatrixXd candidates(const Model& model, Eigen::Index n, std::uint64_t seed) {
-  const Bounds b = model.bounds();
-  Rng rng(seed);
-  Eigen::MatrixXd X(model.dimension(), n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    for (int i = 0; i < model.dimension(); ++i) X(i, j) = rng.uniform(b.lower[i], b.upper[i]);
-    if (j % 5 == 1) X.col(j) = model.neutral();
-    if (j % 7 == 2) X(1, j) = model.neutral()[1];  // first effect's first parameter only
-    if (j % 6 == 3) X.col(j) = b.upper;
-  }
-  return X;
-}
 
 void expect_bit_identical(const std::string& effects, int samples = 3000, InputHold hold = InputHold::Spline,
                           int substeps = 0) {
   Model model = Model::parse(effects);
   model.set_input_hold(hold);
   model.set_substeps(substeps);
-  const ModelData data = record(samples);
+  const ModelData data = lane_record(samples);
   const ModelProblem problem(model, data);
   ASSERT_TRUE(problem.batched()) << effects;
   // 19 candidates: two full blocks and a partial one (at 8 lanes).
-  const Eigen::MatrixXd X = candidates(model, 19, 7);
+  const Eigen::MatrixXd X = lane_candidates(model, 19, 7);
   Eigen::VectorXd f(X.cols());
   problem.evaluate(X, f);
   int finite = 0, infinite = 0;
@@ -100,7 +66,7 @@ TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
 // a block whose every lane diverges (the block stops early).
 TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
   const Model model = Model::parse("feedback_hysteresis");
-  const ModelData data = record(600);
+  const ModelData data = lane_record(600);
   const ModelProblem problem(model, data);
   const auto names = model.parameter_names();
   const auto index = [&](const std::string& name) {
@@ -132,7 +98,7 @@ TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
 
 TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
   const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
-  const ModelData data = record();
+  const ModelData data = lane_record();
   const ModelProblem problem(model, data);
   Eigen::MatrixXd X = model.neutral().replicate(1, 8);
   const auto names = model.parameter_names();
@@ -152,10 +118,10 @@ TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
 
 TEST(EffectLanes, AModelWithAnEffectWithoutABatchedFormEvaluatesOneCandidateAtATime) {
   const Model model = Model::parse("hysteresis,msd,backlash");
-  const ModelData data = record();
+  const ModelData data = lane_record();
   const ModelProblem problem(model, data);
   EXPECT_FALSE(problem.batched());
-  const Eigen::MatrixXd X = candidates(model, 5, 3);
+  const Eigen::MatrixXd X = lane_candidates(model, 5, 3);
   Eigen::VectorXd f(5);
   problem.evaluate(X, f);
   for (Eigen::Index j = 0; j < 5; ++j) EXPECT_EQ(f[j], problem.sse(X.col(j)));
