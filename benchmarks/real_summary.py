@@ -50,17 +50,12 @@ def timings(directory):
         return dict(line.strip().split("=", 1) for line in f if "=" in line)
 
 
-def scored_model(directory, t):
-    fit = load(os.path.join(directory, t["scored_fit"]))
-    return ",".join(e["name"] for e in fit["effects"])
-
-
 def rows_of(out, name):
     spec = BENCHMARKS[name]
     directory = os.path.join(out, name)
     t = timings(directory)
-    model = scored_model(directory, t)
     fit = load(os.path.join(directory, t["scored_fit"]))
+    model = ",".join(e["name"] for e in fit["effects"])
     rows = []
     for test in sorted(d for d in os.listdir(directory) if d.startswith("test")):
         metrics_path = os.path.join(directory, test, "metrics.json")
