@@ -314,6 +314,46 @@ TEST(ComparisonNoiseFloor, RepeatedSegmentLabelsCountAsPeriods) {
   EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10);
 }
 
+// Gaussian noise low-passed at `cutoff` (a fraction of fs) by a Hann-windowed
+// sinc: no period ever repeats, and above the cutoff the power is gone.
+Eigen::VectorXd band_limited_noise(Eigen::Index n, double cutoff, std::uint64_t seed) {
+  constexpr int kTaps = 129, kHalf = kTaps / 2;
+  std::vector<double> h(kTaps);
+  for (int k = 0; k < kTaps; ++k) {
+    const double m = k - kHalf;
+    const double sinc = m == 0 ? 2 * cutoff : std::sin(2 * kPi * cutoff * m) / (kPi * m);
+    h[std::size_t(k)] = sinc * (0.5 - 0.5 * std::cos(2 * kPi * k / (kTaps - 1)));
+  }
+  const Eigen::VectorXd w = gaussian(n + kTaps, 1.0, seed);
+  Eigen::VectorXd u(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = 0;
+    for (int k = 0; k < kTaps; ++k) s += h[std::size_t(k)] * w[i + k];
+    u[i] = s;
+  }
+  return u;
+}
+
+TEST(ComparisonNoiseFloor, InputAboveASixthOfTheSampleRateGivesTheSpectralEstimate) {
+  // As on Silverbox: a band up to 0.3 fs, never repeated, through a lightly
+  // damped resonance at 0.1 fs. Differences keep the signal and overestimate σ.
+  const Eigen::Index n = 40000;
+  const Eigen::VectorXd u = band_limited_noise(n, 0.3, 3);
+  const double r = 0.97, a1 = 2 * r * std::cos(2 * kPi * 0.1), a2 = -r * r;
+  Eigen::VectorXd clean = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index k = 2; k < n; ++k) clean[k] = a1 * clean[k - 1] + a2 * clean[k - 2] + u[k - 1];
+  for (double sigma : {0.01, 0.1}) {
+    const NoiseFloor f = estimate_noise_floor(u, clean + gaussian(n, sigma, 9), {});
+    EXPECT_EQ(f.method, "spectral");
+    EXPECT_NEAR(f.sigma / sigma, 1.0, 0.10) << "sigma " << sigma;
+    EXPECT_NEAR(f.quiet_from, 0.3, 0.05);
+    EXPECT_GT(difference_noise_floor(clean + gaussian(n, sigma, 9)).sigma, 1.2 * sigma);
+  }
+  // The same band below fs/6 leaves the difference estimate in charge.
+  const Eigen::VectorXd slow = band_limited_noise(n, 0.05, 4);
+  EXPECT_EQ(estimate_noise_floor(slow, slow + gaussian(n, 0.01, 5), {}).method, "difference_mad");
+}
+
 TEST(ComparisonNoiseFloor, ReportedWithTheRmseRatio) {
   ComparisonInput in = sine_case(4000, 0.001, 2.0);
   in.y += gaussian(4000, 0.2, 5);

@@ -103,13 +103,14 @@ nlohmann::json to_json(const ResidualAnalysis& r) {
           {"lowest_excitation_hz", number_or_null(r.lowest_excitation_hz)}};
 }
 
-nlohmann::json to_json(const ComparedNoiseFloor& f, bool heldout) {
+nlohmann::json to_json(const ComparedNoiseFloor& f, bool heldout, double sample_time) {
   nlohmann::json out = {{"sigma", number_or_null(f.sigma)},
                         {"method", f.method},
                         {"rmse_over_sigma", number_or_null(f.rmse_over_sigma)},
                         {"pairs", f.pairs},
                         {"period", f.period},
                         {"order", f.order}};
+  if (f.method == "spectral") out["quiet_from_hz"] = f.quiet_from / sample_time;
   if (heldout) out["heldout_rmse_over_sigma"] = number_or_null(f.heldout_rmse_over_sigma);
   return out;
 }
@@ -175,7 +176,7 @@ nlohmann::json to_json(const Comparison& c) {
   out["branch_tolerance"] = number_or_null(c.branch_tolerance);
   out["by_time"] = list_json(c.by_time);
   out["residual"] = to_json(c.residual);
-  out["noise_floor"] = to_json(c.noise_floor, c.parts.heldout.has_value());
+  out["noise_floor"] = to_json(c.noise_floor, c.parts.heldout.has_value(), c.sample_time);
   out["signatures"] = to_json(c.signatures);
   out["excitation"] = c.excitation.to_json();
   out["startup_transient"] = c.startup.to_json();

@@ -73,6 +73,12 @@ std::string noise_floor(const ComparisonInput& in, const Comparison& m) {
           count(f.pairs) + " sample pairs" +
           (f.period > 0 ? " (period " + count(f.period) + " samples)"
                         : std::string(" (repeated segments)"));
+  else if (f.method == "spectral")
+    how = "from the output's power in the " + count(f.pairs) +
+          " spectral bins where the input has none (from " + num(f.quiet_from / m.sample_time) +
+          " Hz up; no repeated periods, and the input reaches above fs/6, where differences "
+          "of y keep the signal). A sensor's anti-alias filter lowers the noise there, so σ may "
+          "err low";
   else if (f.method == "difference_mad")
     how =
         "from high-order differences of y (no repeated periods found): robust (MAD) estimate, "

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "framework/io/segment_runs.hpp"
+#include "framework/model/spectrum.hpp"
 #include "framework/stats/descriptive.hpp"
 
 namespace hystbench {
@@ -103,6 +104,45 @@ PairSum repeated_labels(const Eigen::VectorXd& u, const Eigen::VectorXd& y,
   return sum;
 }
 
+// Welch segments: long enough to resolve the band edge, short enough to
+// average at least eight segments.
+constexpr int kLongestSpectralSegment = 1024, kShortestSpectralSegment = 64;
+constexpr double kExcitedShare = 1e-3, kQuietShare = 1e-4;
+constexpr std::size_t kFewestQuietBins = 16;
+
+int spectral_segment(Eigen::Index n) {
+  int length = kLongestSpectralSegment;
+  while (length > kShortestSpectralSegment && 8 * Eigen::Index(length) > n) length /= 2;
+  return 8 * Eigen::Index(length) <= n ? length : 0;
+}
+
+// σ from the output's power where the input has none, for an input that
+// reaches above fs/6; nullopt-like "none" when that does not apply.
+NoiseFloor spectral_noise_floor(const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
+  NoiseFloor f{kNaN, "none", 0, 0, 0};
+  const int length = spectral_segment(u.size());
+  if (length == 0) return f;
+  const Spectrum su = welch_spectrum(u, 1.0, length), sy = welch_spectrum(y, 1.0, length);
+  const double peak = *std::max_element(su.power.begin(), su.power.end());
+  const std::size_t bins = su.power.size();
+  bool reaches_sixth = false;
+  std::vector<double> quiet;
+  for (std::size_t b = 2; b < bins; ++b) {
+    reaches_sixth |= su.frequency[b] >= 1.0 / 6.0 && su.power[b] >= kExcitedShare * peak;
+    if (su.power[b] < kQuietShare * peak) {
+      if (quiet.empty()) f.quiet_from = su.frequency[b];
+      quiet.push_back(sy.power[b]);
+    }
+  }
+  if (!(peak > 0) || !reaches_sixth || quiet.size() < std::max(kFewestQuietBins, bins / 8))
+    return f;
+  const double window_energy = 3.0 * length / 8.0;  // Σ w² of the periodic Hann window
+  f.method = "spectral";
+  f.sigma = std::sqrt(stats::median(quiet) / window_energy);
+  f.pairs = long(quiet.size());
+  return f;
+}
+
 double binomial(int n, int k) {
   double c = 1;
   for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
@@ -141,6 +181,7 @@ NoiseFloor estimate_noise_floor(const Eigen::VectorXd& u, const Eigen::VectorXd&
   }
   if (!sum.enough()) sum = repeated_labels(u, y, runs);
   if (sum.enough()) return {sum.sigma(), "periodic", sum.pairs, sum.period, 0};
+  if (const NoiseFloor f = spectral_noise_floor(u, y); f.method == "spectral") return f;
   return difference_noise_floor(y);
 }
 
