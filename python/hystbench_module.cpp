@@ -81,11 +81,16 @@ py::dict measurement_dict(const hystbench::Measurement& m) {
   d["segment"] = m.segment;
   d["sample_time"] = m.sample_time;
   d["source"] = m.source;
+  d["u_unit"] = m.u_unit;
+  d["y_unit"] = m.y_unit;
   return d;
 }
 
-py::dict read_measurement(const std::string& path, const std::string& columns) {
-  return measurement_dict(hystbench::read_measurement(path, hystbench::ColumnMap::parse(columns)));
+py::dict read_measurement(const std::string& path, const std::string& columns,
+                          const std::string& delimiter) {
+  auto map = hystbench::ColumnMap::parse(columns);
+  map.delimiter = hystbench::ColumnMap::parse_delimiter(delimiter);
+  return measurement_dict(hystbench::read_measurement(path, map));
 }
 
 Eigen::VectorXd read_mat_vector(const std::string& path, const std::string& name) {
@@ -98,7 +103,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "hystbench's commands and readers, in process (use the hystbench package)";
   py::register_exception<hystbench::InputError>(m, "InputError", PyExc_ValueError);
   m.def("run_command", &run_command, py::arg("args"), py::arg("echo") = false);
-  m.def("read_measurement", &read_measurement, py::arg("path"), py::arg("columns") = "");
+  m.def("read_measurement", &read_measurement, py::arg("path"), py::arg("columns") = "",
+        py::arg("delimiter") = "auto");
   m.def("read_mat_vector", &read_mat_vector, py::arg("path"), py::arg("name"));
   m.attr("version") = HYSTBENCH_VERSION;
 }

@@ -100,12 +100,15 @@ void expect_column(const Eigen::VectorXd& read, const nlohmann::json& expected, 
 
 TEST_P(AcceptedInput, IsReadWithTheListedValues) {
   const auto& entry = GetParam();
-  const auto columns = ColumnMap::parse(entry.json.value("columns", std::string("")));
+  auto columns = ColumnMap::parse(entry.json.value("columns", std::string("")));
+  columns.delimiter = ColumnMap::parse_delimiter(entry.json.value("delimiter", std::string("auto")));
   const Measurement m = read_measurement(kCorpus / entry.at("file").get<std::string>(), columns);
   expect_column(m.t, entry.at("t"), "t");
   expect_column(m.u, entry.at("u"), "u");
   expect_column(m.y, entry.at("y"), "y");
   EXPECT_EQ(m.segment, entry.json.value("segment", std::vector<std::string>{}));
+  EXPECT_EQ(m.u_unit, entry.json.value("u_unit", std::string()));
+  EXPECT_EQ(m.y_unit, entry.json.value("y_unit", std::string()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, AcceptedInput, ::testing::ValuesIn(entries("accepted")), test_name);

@@ -221,13 +221,18 @@ TEST(Measurement, RejectsSingleSample) {
 
 TEST(Measurement, RejectsMissingColumnListingHeaderAndOption) {
   TempDir dir;
-  const auto p = dir.write("names.csv", "t_s,u_N,y_m\n0,1,2\n1,2,3\n");
+  const auto p = dir.write("names.csv", "ch0_s,ch1_N,ch2_m\n0,1,2\n1,2,3\n");
   const std::string msg = read_error(p);
   EXPECT_CONTAINS(msg, "names.csv");
   EXPECT_CONTAINS(msg, "line 1");
   EXPECT_CONTAINS(msg, "'t'");
-  EXPECT_CONTAINS(msg, "'t_s', 'u_N', 'y_m'");
-  EXPECT_CONTAINS(msg, "--columns t=t_s,u=u_N,y=y_m");
+  EXPECT_CONTAINS(msg, "'ch0_s', 'ch1_N', 'ch2_m'");
+  EXPECT_CONTAINS(msg, "--columns t=ch0_s,u=ch1_N,y=ch2_m");
+  // Names with their units, as a DAQ program writes them, need no option.
+  const Measurement m = read_measurement(dir.write("units.csv", "t_s,u_N,y_m\n0,1,2\n1,2,3\n"));
+  EXPECT_EQ(m.y[1], 3.0);
+  EXPECT_EQ(m.u_unit, "N");
+  EXPECT_EQ(m.y_unit, "m");
 }
 
 TEST(Measurement, RejectsMissingMappedColumn) {
@@ -279,20 +284,22 @@ TEST(Measurement, RejectsRaggedRows) {
   }
 }
 
-// A spreadsheet in a locale with decimal commas saves ';' between fields;
-// the message says so instead of blaming the column names.
-TEST(Measurement, RejectsSemicolonDelimiterNamingIt) {
+// A spreadsheet in a locale with decimal commas saves ';' between fields:
+// read as it is, and refused with a way out when a comma is forced.
+TEST(Measurement, ReadsSemicolonDelimiterWithDecimalCommas) {
   TempDir dir;
-  const std::string msg =
-      read_error(dir.write("semi.csv", "# exported\nt;u;y\n0;1,5;10\n0,5;2;20\n"));
+  const auto p = dir.write("semi.csv", "# exported\nt;u;y\n0;1,5;10\n0,5;2;20\n");
+  const Measurement m = read_measurement(p);
+  EXPECT_EQ(m.u[0], 1.5);
+  EXPECT_EQ(m.t[1], 0.5);
+  ColumnMap comma;
+  comma.delimiter = ',';
+  const std::string msg = read_error(p, comma);
   EXPECT_TRUE(msg.ends_with(
-      "/semi.csv, line 2: the header 't;u;y' seems to use ';' as the delimiter; hystbench reads "
-      "comma-separated files with decimal points (1.5, not 1,5). Save the file as "
-      "comma-separated with '.' in numbers, or convert it, e.g. sed 's/,/./g; s/;/,/g'"))
+      "/semi.csv, line 2: the header 't;u;y' is one field with --delimiter comma; it seems to use "
+      "another delimiter: leave --delimiter out (auto) or give the one the file uses (comma, "
+      "semicolon or tab)"))
       << msg;
-  // Mapping the columns does not get past it: the whole header is one name.
-  EXPECT_CONTAINS(read_error(dir.path() / "semi.csv", ColumnMap::parse("t=t;u;y")),
-                  "';' as the delimiter");
 }
 
 // Decimal commas in a comma-separated file split each number in two.
@@ -302,8 +309,9 @@ TEST(Measurement, RejectsDecimalCommasNamingThem) {
       read_error(dir.write("commas.csv", "t,u,y\n0,1,10\n0,5,2,20\n1,3,30\n"));
   EXPECT_TRUE(msg.ends_with(
       "/commas.csv, line 3: the row has 4 fields but the header (line 1) has 3, and no decimal "
-      "point: the file seems to use decimal commas; hystbench reads comma-separated files with "
-      "decimal points (1.5, not 1,5). Write the numbers with '.' instead"))
+      "point: the file seems to use decimal commas; a file with commas between fields needs "
+      "decimal points (1.5, not 1,5); decimal commas are read in files with ';' or tabs between "
+      "fields. Write the numbers with '.' instead"))
       << msg;
   // Quoted, a decimal comma stays in one field, which is then not a number.
   const std::string quoted =

@@ -12,6 +12,7 @@ DataSource DataOptions::source() const {
   DataSource s;
   s.path = data;
   if (!columns.empty()) s.columns = ColumnMap::parse(columns);
+  s.columns.delimiter = ColumnMap::parse_delimiter(delimiter);
   s.u_unit = input_unit;
   s.y_unit = output_unit;
   return s;
@@ -34,7 +35,11 @@ bool same_file(const std::string& a, const std::string& b) {
 
 ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
                        HoldoutSpec::Mode elsewhere) {
-  if (o.columns.empty()) source.columns = fit.data.columns;
+  if (o.columns.empty()) {
+    const char given = source.columns.delimiter;
+    source.columns = fit.data.columns;
+    if (given) source.columns.delimiter = given;
+  }
   if (source.u_unit.empty()) source.u_unit = fit.data.u_unit;
   if (source.y_unit.empty()) source.y_unit = fit.data.y_unit;
   const Measurement m = source.load();
@@ -55,11 +60,18 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
   cmd->add_option("--data", o.data, "measurement CSV (columns t, u, y, optional segment) or MAT file (vectors t, u, y)")
       ->required();
-  cmd->add_option("--columns", o.columns, "column names when they differ, e.g. t=t_s,u=u_N,y=y_m");
+  cmd->add_option("--columns", o.columns,
+                  "column names when they are not t, u, y or a common name (time/zeit, "
+                  "voltage/spannung/input, displacement/weg/position/output), e.g. "
+                  "t=t_s,u=u_N,y=y_m");
+  cmd->add_option("--delimiter", o.delimiter,
+                  "between fields: comma, semicolon or tab (default: the header's; with ';' or "
+                  "tab, decimal commas are read)");
   cmd->add_option("--input-unit", o.input_unit,
-                  "unit of u for reports (default: from DATA.truth.json, if any)");
+                  "unit of u for reports (default: from DATA.truth.json, else the header, e.g. "
+                  "voltage [V])");
   cmd->add_option("--output-unit", o.output_unit,
-                  "unit of y for reports (default: from DATA.truth.json, if any)");
+                  "unit of y for reports (default: from DATA.truth.json, else the header)");
   cmd->add_option("--warmup", o.warmup,
                   "leading samples that only initialise the model (a start-up transient, an "
                   "unknown initial state): simulated, never fitted or scored (benchmarks: "

@@ -14,12 +14,12 @@
 namespace hystbench::cli {
 
 struct DataOptions {
-  std::string data, columns, input_unit, output_unit, holdout = "auto";
+  std::string data, columns, delimiter, input_unit, output_unit, holdout = "auto";
   std::optional<long> warmup;  // --warmup; unset: 0, or a fit's own
   DataSource source() const;
   HoldoutSpec holdout_spec() const;
 };
-// --data (required), --columns, --input-unit, --output-unit, --warmup;
+// --data (required), --columns, --delimiter, --input-unit, --output-unit, --warmup;
 // --holdout when `with_holdout`.
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
 

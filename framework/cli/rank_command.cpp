@@ -49,7 +49,13 @@ Action add_rank_command(CLI::App& app) {
   cmd->add_option("folders", o->folders,
                   "results folders of `hystbench run`, one per data set (at least 2)")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(CLI::Validator(
+          [](const std::string& path) -> std::string {
+            if (fs::is_directory(path)) return {};
+            return path + (fs::exists(path) ? " is a file" : " does not exist") +
+                   "; give results folders of `hystbench run` (plugins go after --plugin)";
+          },
+          "DIR"));
   cmd->add_option("--out", o->out, "folder for ranks.md/.tex/.csv/.json and ranks.gp")->required();
   cmd->add_option("--control", o->control,
                   "label of the algorithm the others are tested against (default: the best "
@@ -58,7 +64,13 @@ Action add_rank_command(CLI::App& app) {
       ->check(CLI::IsMember({"mean", "median"}))
       ->capture_default_str();
   cmd->add_flag("--force", o->force, "replace a ranking already in the --out folder");
-  return [o] { rank(*o); };
+  // Accepted as by every command that reads results, so that a plugin path is
+  // never taken for a results folder.
+  auto load_plugins = add_plugin_option(*cmd);
+  return [o, load_plugins] {
+    load_plugins();
+    rank(*o);
+  };
 }
 
 }  // namespace hystbench::cli

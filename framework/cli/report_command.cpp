@@ -9,7 +9,9 @@
 #include "framework/cli/commands.hpp"
 #include "framework/cli/output_folder.hpp"
 #include "framework/core/error.hpp"
+#include "framework/core/plugin_loader.hpp"
 #include "framework/core/registry.hpp"
+#include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/results_folder.hpp"
 #include "framework/report/results_merge.hpp"
@@ -70,9 +72,7 @@ std::unique_ptr<Problem> rebuild_problem(const Experiment& e) {
   }
 }
 
-void report(const ReportOptions& o) {
-  std::vector<ResultsFolder> folders;
-  for (const auto& f : o.folders) folders.push_back(read_results_folder(f));
+void write_merged_report(const ReportOptions& o, const std::vector<ResultsFolder>& folders) {
   MergedResults merged = merge_results(folders);
   check_reference(merged.experiment, o.reference);
   if (!o.base_dir.empty()) merged.experiment.base_dir = o.base_dir;
@@ -87,6 +87,39 @@ void report(const ReportOptions& o) {
   for (const auto& f : written.files) std::cout << "  " << f.string() << "\n";
   for (const auto& f : written.figures) std::cout << "  " << f.string() << "\n";
   if (!written.note.empty()) std::cout << written.note << "\n";
+}
+
+// "R was made with --plugin A.so (x, y); pass the same" for the plugins a
+// folder's provenance records and this run has not loaded; "" otherwise.
+std::string missing_plugins(const std::vector<ResultsFolder>& folders) {
+  std::string advice;
+  for (const auto& f : folders) {
+    std::string flags;
+    const auto recorded = f.summary.value("provenance", nlohmann::json::object())
+                              .value("plugins", nlohmann::json::array());
+    for (const auto& p : recorded) {
+      const std::string path = p.value("path", "");
+      bool loaded = false;
+      for (const auto& l : loaded_plugins()) loaded = loaded || l.path == path;
+      if (!loaded)
+        flags += (flags.empty() ? "" : " ") + std::string("--plugin ") + path + " (" +
+                 join(p.value("names", std::vector<std::string>{})) + ")";
+    }
+    if (!flags.empty()) advice += f.dir.string() + " was made with " + flags + "; pass the same. ";
+  }
+  return advice;
+}
+
+void report(const ReportOptions& o) {
+  std::vector<ResultsFolder> folders;
+  for (const auto& f : o.folders) folders.push_back(read_results_folder(f));
+  try {
+    write_merged_report(o, folders);
+  } catch (const InputError& e) {
+    const std::string advice = missing_plugins(folders);
+    if (advice.empty()) throw;
+    throw InputError(std::string(e.what()) + ". " + advice.substr(0, advice.size() - 1));
+  }
 }
 
 }  // namespace

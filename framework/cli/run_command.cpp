@@ -29,7 +29,7 @@ namespace hystbench::cli {
 namespace {
 
 struct RunOptions {
-  std::string experiment, out, columns, trial_range, reference, data;
+  std::string experiment, out, columns, delimiter, trial_range, reference, data;
   int threads = 0;
   long trials = 0;
   long long seed = -1;
@@ -116,7 +116,13 @@ Experiment load_experiment(const RunOptions& o) {
   if (o.trials > 0) experiment.trials = o.trials;
   if (o.seed >= 0) experiment.seed = static_cast<std::uint64_t>(o.seed);
   if (!o.data.empty()) replace_data(experiment, o.data);
-  if (!o.columns.empty()) experiment.problem["columns"] = ColumnMap::parse(o.columns).to_json();
+  if (!o.columns.empty() || !o.delimiter.empty()) {
+    ColumnMap map = o.columns.empty() ? ColumnMap::from_json(experiment.problem.value("columns", nlohmann::json()),
+                                                             "problem.columns")
+                                      : ColumnMap::parse(o.columns);
+    if (!o.delimiter.empty()) map.delimiter = ColumnMap::parse_delimiter(o.delimiter);
+    experiment.problem["columns"] = map.to_json();
+  }
   return experiment;
 }
 
@@ -221,6 +227,8 @@ Action add_run_command(CLI::App& app) {
                   "same algorithms on several data sets, ranked with `hystbench rank`)");
   cmd->add_option("--columns", o->columns,
                   "data columns holding t, u, y (and segment), e.g. t=t_s,u=u_N,y=y_m");
+  cmd->add_option("--delimiter", o->delimiter,
+                  "between fields of --data: comma, semicolon or tab (default: the header's)");
   cmd->add_option("--trial-range", o->trial_range,
                   "run only trials FROM to TO-1 (0-based, e.g. 0:5) of the experiment, with the "
                   "seeds they have in the full run; merge slices with `hystbench report`");

@@ -21,6 +21,7 @@
 #include "framework/core/error.hpp"
 #include "framework/core/optimizer.hpp"
 #include "framework/core/parameters.hpp"
+#include "framework/core/plugin_loader.hpp"
 #include "framework/core/problem.hpp"
 #include "framework/core/text.hpp"
 
@@ -55,14 +56,18 @@ class Registry {
     static Registry registry;
     return registry;
   }
-  void add(Info info) { entries_[info.name] = std::move(info); }
-  // Throws InputError naming the known entries.
+  void add(Info info) {
+    detail::note_registration(info.name);
+    entries_[info.name] = std::move(info);
+  }
+  // Throws InputError naming the known entries, and how a plugin's are added.
   const Info& find(const std::string& name, const std::string& what) const {
     auto it = entries_.find(name);
     if (it != entries_.end()) return it->second;
     std::vector<std::string> known;
     for (const auto& [key, entry] : entries_) known.push_back(key);
-    throw InputError(what + ": unknown name '" + name + "'; known: " + join(known));
+    throw InputError(what + ": unknown name '" + name + "'; known: " + join(known) +
+                     ". A plugin's name? Load its library with --plugin PATH.so");
   }
   bool contains(const std::string& name) const { return entries_.count(name) > 0; }
   std::vector<const Info*> all() const {

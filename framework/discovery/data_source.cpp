@@ -16,6 +16,8 @@ Measurement DataSource::load() {
     u_unit = units["u"].get<std::string>();
   if (y_unit.empty() && units.is_object() && units.value("y", nlohmann::json()).is_string())
     y_unit = units["y"].get<std::string>();
+  if (u_unit.empty()) u_unit = m.u_unit;
+  if (y_unit.empty()) y_unit = m.y_unit;
   return m;
 }
 

@@ -13,11 +13,12 @@ namespace hystbench {
 struct DataSource {
   std::string path;
   ColumnMap columns;
-  std::string u_unit, y_unit;  // empty: taken from DATA.truth.json when it has them
+  std::string u_unit, y_unit;  // empty: from DATA.truth.json, else from the header
 
   // The data file's name without its folder, for titles.
   std::string file_name() const;
-  // Reads the CSV; fills empty units from the truth file beside it.
+  // Reads the CSV; fills empty units from the truth file beside it, else
+  // from the header's names.
   Measurement load();
   nlohmann::json to_json() const;
 };

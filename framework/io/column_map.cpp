@@ -27,6 +27,19 @@ std::string* role_field(ColumnMap& map, std::string_view role) {
 
 }  // namespace
 
+const char* delimiter_name(char d) {
+  return d == ',' ? "comma" : d == ';' ? "semicolon" : d == '\t' ? "tab" : "auto";
+}
+
+char ColumnMap::parse_delimiter(const std::string& spec) {
+  const std::string_view s = spec == "\t" ? std::string_view(spec) : trim(spec);
+  if (s == "auto" || s.empty()) return 0;
+  if (s == "comma" || s == ",") return ',';
+  if (s == "semicolon" || s == ";") return ';';
+  if (s == "tab" || s == "\t" || s == "\\t") return '\t';
+  throw InputError("--delimiter " + spec + ": not a delimiter; use auto, comma, semicolon or tab");
+}
+
 ColumnMap ColumnMap::parse(const std::string& spec) {
   ColumnMap map;
   if (trim(spec).empty()) return map;
@@ -62,6 +75,15 @@ ColumnMap ColumnMap::from_json(const nlohmann::json& j, const std::string& where
     throw InputError(where + ": expected an object of column names such as "
                              "{\"t\": \"t_s\", \"u\": \"u_N\", \"y\": \"y_m\"}, got " + j.dump());
   for (const auto& [key, value] : j.items()) {
+    if (key == "delimiter") {
+      try {
+        map.delimiter = parse_delimiter(value.is_string() ? value.get<std::string>() : "?");
+      } catch (const InputError&) {
+        throw InputError(where + ".delimiter: " + value.dump() +
+                         " is not a delimiter; use \"auto\", \"comma\", \"semicolon\" or \"tab\"");
+      }
+      continue;
+    }
     std::string* field = role_field(map, key);
     if (!field)
       throw InputError(where + "." + key + ": unknown column role; valid roles: " + kRoleList);
@@ -74,7 +96,9 @@ ColumnMap ColumnMap::from_json(const nlohmann::json& j, const std::string& where
 }
 
 nlohmann::json ColumnMap::to_json() const {
-  return {{"t", t}, {"u", u}, {"y", y}, {"segment", segment}};
+  nlohmann::json j = {{"t", t}, {"u", u}, {"y", y}, {"segment", segment}};
+  if (delimiter) j["delimiter"] = delimiter_name(delimiter);
+  return j;
 }
 
 }  // namespace hystbench

@@ -38,8 +38,9 @@ inline std::string_view trim(std::string_view s) {
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
-// Hands out the lines that carry content: blank lines and '#' comments are
-// skipped, but still counted so that messages point at the right line.
+// Hands out the lines that carry content: blank lines and '#' or '%'
+// comments (a DAQ program's or MATLAB's header) are skipped, but still
+// counted so that messages point at the right line.
 class LineReader {
  public:
   explicit LineReader(std::string_view text) : text_(text) {
@@ -54,7 +55,7 @@ class LineReader {
       ++line_;
       if (line.ends_with('\r')) line.remove_suffix(1);
       const std::string_view body = trim(line);
-      if (!body.empty() && body.front() != '#') return line;
+      if (!body.empty() && body.front() != '#' && body.front() != '%') return line;
     }
     return std::nullopt;
   }
@@ -67,8 +68,14 @@ class LineReader {
   std::size_t line_ = 0;
 };
 
-// Splits one CSV line into fields without quotes and surrounding blanks.
-// `fields` is reused from line to line so a long file does not allocate per row.
-void split_csv_line(std::string_view line, std::vector<std::string>& fields, const Location& at);
+// Splits one CSV line at `delimiter` (',', ';' or '\t') into fields without
+// quotes and surrounding blanks. `fields` is reused from line to line so a
+// long file does not allocate per row.
+void split_csv_line(std::string_view line, std::vector<std::string>& fields, const Location& at,
+                    char delimiter = ',');
+
+// The delimiter a header line uses: the most frequent of ',', ';' and tab
+// (',' on a tie, then ';'), so that tabs as blanks around commas stay blanks.
+char detect_delimiter(std::string_view header);
 
 }  // namespace hystbench::measurement_csv

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/core/error.hpp"
+#include "framework/io/header_names.hpp"
 #include "framework/io/measurement_csv_lines.hpp"
 #include "framework/io/measurement_csv_rows.hpp"
 #include "framework/io/mat_file.hpp"
@@ -25,6 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using measurement_csv::detect_delimiter;
 using measurement_csv::fail;
 using measurement_csv::Header;
 using measurement_csv::LineReader;
@@ -35,10 +37,10 @@ using measurement_csv::to_measurement;
 
 // Squares of larger values, summed over a record, overflow a double.
 constexpr double kLargestValue = 1e150;
-constexpr const char* kColumnsHint = "--columns t=t_s,u=u_N,y=y_m";
 // Files saved where the decimal separator is a comma: what they are and how to fix them.
 constexpr const char* kCommaSeparatedPoints =
-    "hystbench reads comma-separated files with decimal points (1.5, not 1,5)";
+    "a file with commas between fields needs decimal points (1.5, not 1,5); decimal commas "
+    "are read in files with ';' or tabs between fields";
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -130,12 +132,35 @@ void check_unique(const std::vector<std::string>& names, const Location& at) {
   }
 }
 
+// "--columns 't=Zeit [s],u=U [V],y=Weg [um]'" from the file's own first
+// three names, so the advice works when pasted.
+std::string columns_hint(const std::vector<std::string>& names) {
+  if (names.size() < 3) return "--columns t=t_s,u=u_N,y=y_m";
+  std::string spec = "t=" + names[0] + ",u=" + names[1] + ",y=" + names[2];
+  const bool quote = spec.find_first_of(" []()'\t") != std::string::npos;
+  return "--columns " + (quote ? "'" + spec + "'" : spec) + " (with the right names in that order)";
+}
+
+// The column named `name`; for a role left at its default name, also the
+// one column known by a common name of the role ("Zeit [s]" for t).
 std::size_t require_column(const std::vector<std::string>& names, const std::string& name,
-                           const char* role, const Location& at) {
+                           ColumnRole role, const Location& at) {
   if (const auto index = find_column(names, name)) return *index;
-  fail(at, "the header has no column '" + name + "' (for " + role + "); its columns are " +
-               join(names) + ". Tell which columns hold t, u and y with the --columns option, " +
-               "e.g. " + kColumnsHint);
+  const char* r = role_name(role);
+  if (name == r) {
+    const auto named = columns_named_as(names, role);
+    if (named.size() == 1) return named.front();
+    std::vector<std::string> which;
+    for (auto i : named) which.push_back(names[i]);
+    if (named.size() > 1)
+      fail(at, "columns " + join(which) + " could each hold " + r + "; tell which with " +
+                   columns_hint(names));
+  }
+  fail(at, "the header has no column '" + name + "' (for " + r + ")" +
+               (name == r ? ", nor one named " + role_synonyms(role) + " with or without a unit"
+                          : std::string()) +
+               "; its columns are " + join(names) + ". Tell which columns hold t, u and y with " +
+               columns_hint(names));
 }
 
 Header read_header(LineReader& reader, std::vector<std::string>& fields, const ColumnMap& map,
@@ -145,19 +170,21 @@ Header read_header(LineReader& reader, std::vector<std::string>& fields, const C
     fail({file}, "no header row: the file is empty or holds only blank and '#' lines; it needs "
                  "a header such as t,u,y and one row per sample");
   const Location at{file, reader.line_number()};
-  split_csv_line(*line, fields, at);
-  // Before the column checks, which would blame the names: the whole header is one name.
-  if (fields.size() == 1 && fields[0].find(';') != std::string::npos)
-    fail(at, "the header '" + fields[0] + "' seems to use ';' as the delimiter; " +
-                 kCommaSeparatedPoints + ". Save the file as comma-separated with '.' in numbers, " +
-                 "or convert it, e.g. sed 's/,/./g; s/;/,/g'");
-  check_unique(fields, at);
   Header h;
+  h.delimiter = map.delimiter ? map.delimiter : detect_delimiter(*line);
+  split_csv_line(*line, fields, at, h.delimiter);
+  // Before the column checks, which would blame the names: the whole header is one name.
+  if (fields.size() == 1 && fields[0].find_first_of(";\t") != std::string::npos)
+    fail(at, "the header '" + fields[0] + "' is one field with --delimiter " +
+                 std::string(delimiter_name(h.delimiter)) +
+                 "; it seems to use another delimiter: leave --delimiter out (auto) or give the "
+                 "one the file uses (comma, semicolon or tab)");
+  check_unique(fields, at);
   h.names = fields;
   h.line = at.line;
-  h.t = require_column(h.names, map.t, "t", at);
-  h.u = require_column(h.names, map.u, "u", at);
-  h.y = require_column(h.names, map.y, "y", at);
+  h.t = require_column(h.names, map.t, ColumnRole::t, at);
+  h.u = require_column(h.names, map.u, ColumnRole::u, at);
+  h.y = require_column(h.names, map.y, ColumnRole::y, at);
   h.segment = find_column(h.names, map.segment);
   return h;
 }
@@ -166,9 +193,17 @@ Header read_header(LineReader& reader, std::vector<std::string>& fields, const C
 // numbers were most likely written with decimal commas ("0,001,1,5" for
 // 0.001, 1.5).
 bool split_decimal_commas(const std::vector<std::string>& fields, const Header& h) {
-  return fields.size() > h.names.size() &&
+  return h.delimiter == ',' && fields.size() > h.names.size() &&
          std::none_of(fields.begin(), fields.end(),
                       [](const std::string& f) { return f.find('.') != std::string::npos; });
+}
+
+// "1,5" read as 1.5 when fields are not separated by commas.
+std::string_view number_text(const std::string& field, const Header& h, std::string& buffer) {
+  if (h.delimiter == ',' || !decimal_comma(field)) return field;
+  buffer = field;
+  std::replace(buffer.begin(), buffer.end(), ',', '.');
+  return buffer;
 }
 
 void read_row(const std::vector<std::string>& fields, const Header& h, const Location& at,
@@ -181,13 +216,27 @@ void read_row(const std::vector<std::string>& fields, const Header& h, const Loc
   if (fields.size() != h.names.size())
     fail(at, "the row has " + std::to_string(fields.size()) + " fields but the header (line " +
                  std::to_string(h.line) + ") has " + std::to_string(h.names.size()) +
-                 "; check for a missing or extra comma");
-  rows.t.push_back(parse_number(fields[h.t], at, h.names[h.t]));
-  rows.u.push_back(parse_number(fields[h.u], at, h.names[h.u]));
-  rows.y.push_back(parse_number(fields[h.y], at, h.names[h.y]));
+                 "; check for a missing or extra " + std::string(delimiter_name(h.delimiter)));
+  std::string buffer;
+  const auto value = [&](std::size_t i) {
+    return parse_number(number_text(fields[i], h, buffer), at, h.names[i]);
+  };
+  rows.t.push_back(value(h.t));
+  rows.u.push_back(value(h.u));
+  rows.y.push_back(value(h.y));
   if (h.segment) rows.segment.push_back(fields[*h.segment]);
   rows.line.push_back(at.line);
   rows.time_digits = std::max(rows.time_digits, significant_digits(fields[h.t]));
+}
+
+// Time columns in ms, µs, min or h are read in seconds.
+double seconds_per(const std::string& unit) {
+  if (unit == "ms") return 1e-3;
+  if (unit == "µs") return 1e-6;
+  if (unit == "ns") return 1e-9;
+  if (unit == "min") return 60.0;
+  if (unit == "h") return 3600.0;
+  return 1.0;
 }
 
 }  // namespace
@@ -205,10 +254,16 @@ Measurement parse_measurement(std::string_view text, const std::string& file,
   Rows rows;
   while (const auto line = reader.next()) {
     const Location at{file, reader.line_number()};
-    split_csv_line(*line, fields, at);
+    split_csv_line(*line, fields, at, header.delimiter);
     read_row(fields, header, at, rows);
   }
-  return to_measurement(rows, header, file);
+  const std::string t_unit = split_unit(header.names[header.t]).unit;
+  if (const double seconds = seconds_per(t_unit); seconds != 1.0)
+    for (double& t : rows.t) t *= seconds;
+  Measurement m = to_measurement(rows, header, file);
+  m.u_unit = split_unit(header.names[header.u]).unit;
+  m.y_unit = split_unit(header.names[header.y]).unit;
+  return m;
 }
 
 }  // namespace hystbench

@@ -10,12 +10,14 @@
 
 namespace hystbench::measurement_csv {
 
-// The header row: the column names and where t, u, y and segment are.
+// The header row: the column names, where t, u, y and segment are, and the
+// field delimiter.
 struct Header {
   std::vector<std::string> names;
   std::size_t line = 0;
   std::size_t t = 0, u = 0, y = 0;
   std::optional<std::size_t> segment;
+  char delimiter = ',';
 };
 
 // The data rows column by column, with the line each came from.

@@ -4,6 +4,8 @@
 
 #include <ctime>
 
+#include "framework/core/plugin_loader.hpp"
+
 namespace hystbench {
 namespace {
 
@@ -30,7 +32,7 @@ std::string host_name() {
 }  // namespace
 
 nlohmann::json provenance(int threads, std::uint64_t seed) {
-  return {{"version", HYSTBENCH_VERSION},
+  nlohmann::json j = {{"version", HYSTBENCH_VERSION},
           {"git_commit", HYSTBENCH_GIT_COMMIT},
           {"compiler", kCompiler},
           {"flags", HYSTBENCH_CXX_FLAGS},
@@ -38,6 +40,9 @@ nlohmann::json provenance(int threads, std::uint64_t seed) {
           {"seed", seed},
           {"date", utc_now()},
           {"host", host_name()}};
+  for (const auto& p : loaded_plugins())
+    j["plugins"].push_back({{"path", p.path}, {"names", p.names}});
+  return j;
 }
 
 }  // namespace hystbench

@@ -5,7 +5,9 @@
 
 namespace hystbench {
 
-// version, git commit, compiler and flags, OpenMP threads, seed, UTC date, host.
+// version, git commit, compiler and flags, OpenMP threads, seed, UTC date,
+// host, and "plugins" (path as given and names registered) when any were
+// loaded.
 nlohmann::json provenance(int threads, std::uint64_t seed);
 
 }  // namespace hystbench

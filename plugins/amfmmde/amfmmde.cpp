@@ -25,10 +25,12 @@ constexpr int kStrategies = 4;  // S1 best/1, S2 rand/1, S3 pbest/1, S4 neighbor
 constexpr double kSadeEpsilon = 0.01;
 
 const char* const kCitation =
-    "Active vibration control of an MFC-actuated cantilever beam with a non-symmetric "
-    "Bouc-Wen + ARX Hammerstein model identified by AmFMMDE, J. Low Frequency Noise, "
-    "Vibration and Active Control (SAGE), 2024, doi:10.1177/14613484241295460 (title and "
-    "authors unverified). Strategy set from the paper; DE/neighbor/1 from H. Peng, Z. Guo, "
+    "The paper that introduced AmFMMDE, for active vibration control of an MFC-actuated "
+    "cantilever beam with a non-symmetric Bouc-Wen + ARX Hammerstein model and VSS-FxLMS "
+    "(seed paper 000). Cited from its text; its authors could not be confirmed, and the venue "
+    "and DOI are as recorded, not checked against the publisher: J. Low Frequency Noise, "
+    "Vibration and Active Control (SAGE), 2024, doi:10.1177/14613484241295460. Strategy set "
+    "from the paper; DE/neighbor/1 from H. Peng, Z. Guo, "
     "C. Deng, Z. Wu, J. Computational Science 26, 2018, doi:10.1016/j.jocs.2017.07.010. "
     "RECONSTRUCTION (docs/algorithms.md#amfmmde): the adaptive-F rule (AMF-1/2/3), the strategy "
     "selection (uniform or SaDE: Qin, Huang, Suganthan, IEEE TEVC 13(2), 2009, LP generations, "

@@ -21,8 +21,9 @@ class Mede : public Optimizer {
             "current-to-pbest/1 mutation",
             "H. M. Umar, R. Yu, Z. Gao, H. Zhang, Enhancing model estimation accuracy and "
             "convergence rate in hysteresis modeling of MFC actuators using modified differential "
-            "evolution algorithm, JVE International (Extrica), article 23309, 2023 (probably "
-            "Vibroengineering PROCEDIA, doi:10.21595/vp.2023.23309 - unverified). Structure as "
+            "evolution algorithm, Extrica (JVE International), article 23309, published 18 May "
+            "2023 (title, authors and date checked on extrica.com/article/23309; the DOI "
+            "10.21595/vp.2023.23309 is as recorded, not checked). Structure as "
             "in the paper (eqs. 16-19); RESOLUTION: the parameter values (NP, F range, CR, p), "
             "equal strategy probabilities and the absence of an archive are not published and "
             "are this project's choices (docs/algorithms.md#mede).",

@@ -11,6 +11,9 @@ temporary folder that is removed once they are read.
     m = hb.read_measurement("problems/hammerstein/data/default.csv")
     f = hb.fit(m.source, model="hysteresis,msd", restarts=2)
     f.rmse, f.parameters["hysteresis.A"]
+
+Wherever a data file is taken, arrays are taken too: ``(t, u, y)``, a sample
+time and ``(dt, u, y)``, or a ``Measurement``.
 """
 from __future__ import annotations
 
@@ -38,6 +41,10 @@ __all__ = ["InputError", "Measurement", "Fit", "Comparison", "Diagnosis", "Disco
 __version__ = version
 
 
+def __dir__() -> list[str]:  # the API only, not the modules it imports
+    return sorted([*__all__, "__version__"])
+
+
 @dataclasses.dataclass
 class Measurement:
     """A measurement as hystbench reads it (CSV or MAT file)."""
@@ -47,6 +54,8 @@ class Measurement:
     segment: list[str]
     sample_time: float
     source: str
+    u_unit: str = ""
+    y_unit: str = ""
 
 
 @dataclasses.dataclass
@@ -116,19 +125,22 @@ def command(*args: str, echo: bool = False) -> str:
     return _run_command([str(a) for a in args], echo)
 
 
-def read_measurement(path: str | os.PathLike, columns: str | dict[str, str] | None = None
-                     ) -> Measurement:
+def read_measurement(path: str | os.PathLike, columns: str | dict[str, str] | None = None,
+                     delimiter: str = "auto") -> Measurement:
     """Reads a measurement CSV or MAT file; ``columns`` maps t, u, y and
-    segment to the file's names ("t=time,u=v_in" or a dict)."""
-    d = _read_measurement(str(path), _columns_text(columns))
+    segment to the file's names ("t=time,u=v_in" or a dict), when they are
+    not t, u, y or a common name such as "Voltage [V]"; ``delimiter`` is
+    "comma", "semicolon" or "tab" when the header's is not the one."""
+    d = _read_measurement(str(path), _columns_text(columns), delimiter)
     return Measurement(t=d["t"], u=d["u"], y=d["y"], segment=list(d["segment"]),
-                       sample_time=d["sample_time"], source=d["source"])
+                       sample_time=d["sample_time"], source=d["source"],
+                       u_unit=d["u_unit"], y_unit=d["y_unit"])
 
 
-def fit(data: str | os.PathLike, model: str, *, out: str | os.PathLike | None = None,
+def fit(data: Data, model: str, *, out: str | os.PathLike | None = None,
         echo: bool = False, **options: Any) -> Fit:
     """`hystbench fit --data DATA --model MODEL`."""
-    with _folder(out) as folder:
+    with _folder(out) as folder, _data_file(data) as data:
         _run("fit", folder, out, echo, data=data, model=model, **options)
         record = _json(folder / "fit.json")
     return _fit_of(record, out)
@@ -146,32 +158,33 @@ def simulate(out: str | os.PathLike | None = None, *, echo: bool = False, **opti
         return read_measurement(target), truth
 
 
-def compare(data: str | os.PathLike, fit: str | os.PathLike | Fit, *,
+def compare(data: Data, fit: str | os.PathLike | Fit, *,
             out: str | os.PathLike | None = None, echo: bool = False, **options: Any
             ) -> Comparison:
     """`hystbench compare --data DATA --fit FIT`, with the model output."""
-    with _folder(out) as folder, _fit_file(fit) as fit_file:
+    with _folder(out) as folder, _fit_file(fit) as fit_file, _data_file(data) as data:
         mat = folder / "model_output.mat"
         _run("compare", folder, out, echo, data=data, fit=fit_file, mat=mat, **options)
         vectors = {name: read_mat_vector(str(mat), name) for name in ("t", "y", "y_model")}
         return Comparison(metrics=_json(folder / "metrics.json"), folder=_kept(out), **vectors)
 
 
-def diagnose(data: str | os.PathLike, model: str | None = None, *,
+def diagnose(data: Data, model: str | None = None, *,
              out: str | os.PathLike | None = None, echo: bool = False, **options: Any
              ) -> Diagnosis:
     """`hystbench diagnose --data DATA --model MODEL` (or ``fit=`` a fit)."""
-    with _folder(out) as folder, _fit_file(options.pop("fit", None)) as fit_file:
+    with _folder(out) as folder, _fit_file(options.pop("fit", None)) as fit_file, \
+            _data_file(data) as data:
         _run("diagnose", folder, out, echo, data=data, model=model, fit=fit_file, **options)
         record = _json(folder / "diagnosis.json")
     return Diagnosis(verdict=record["verdict"], complete=bool(record["complete"]),
                      record=record, folder=_kept(out))
 
 
-def discover(data: str | os.PathLike, start: str, *, out: str | os.PathLike | None = None,
+def discover(data: Data, start: str, *, out: str | os.PathLike | None = None,
              echo: bool = False, **options: Any) -> Discovery:
     """`hystbench discover --data DATA --start START`."""
-    with _folder(out) as folder:
+    with _folder(out) as folder, _data_file(data) as data:
         _run("discover", folder, out, echo, data=data, start=start, **options)
         record = _json(folder / "ladder.json")
     return Discovery(model=record["final_model"], complete=bool(record["complete"]),
@@ -255,6 +268,61 @@ def _fit_of(record: dict[str, Any], out: str | os.PathLike | None) -> Fit:
                heldout_rmse=errors.get("heldout_rmse"),
                parameters={p["name"]: p["value"] for p in record["parameters"]},
                record=record, folder=_kept(out))
+
+
+Data = Any  # a path, (t, u, y), (dt, u, y) or a Measurement
+
+
+@contextlib.contextmanager
+def _data_file(data: Data) -> Iterator[str]:
+    """A data file's path: as given, or the arrays written to a CSV (17
+    significant digits, so every value reads back exactly) for the command."""
+    if isinstance(data, (str, os.PathLike)):
+        yield str(data)
+        return
+    segment: list[str] = []
+    names = ["t", "u", "y"]
+    if isinstance(data, Measurement):
+        t, u, y, segment = data.t, data.u, data.y, data.segment
+        for i, unit in ((1, data.u_unit), (2, data.y_unit)):
+            names[i] += f" [{unit}]" if unit else ""
+    else:
+        t, u, y = _arrays(data)
+    with tempfile.TemporaryDirectory(prefix="hystbench_data_") as tmp:
+        path = Path(tmp) / "data.csv"
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(",".join(names + (["segment"] if segment else [])) + "\n")
+            for k in range(len(t)):
+                row = f"{t[k]:.17g},{u[k]:.17g},{y[k]:.17g}"
+                f.write(row + (f",{_csv_text(segment[k])}\n" if segment else "\n"))
+        yield str(path)
+
+
+def _csv_text(text: str) -> str:
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+def _arrays(data: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    try:
+        first, u, y = data
+    except (TypeError, ValueError):
+        raise InputError("data: give a file path, (t, u, y), (dt, u, y) or a Measurement, not "
+                         f"{type(data).__name__}") from None
+    u = np.asarray(u, dtype=float).ravel()
+    y = np.asarray(y, dtype=float).ravel()
+    if u.shape != y.shape:
+        raise InputError(f"data: u has {u.size} samples but y has {y.size}; give one of each "
+                         "per sample")
+    if np.ndim(first) == 0:
+        dt = float(first)
+        if not dt > 0:
+            raise InputError(f"data: the sample time {dt} must be positive")
+        return dt * np.arange(u.size), u, y
+    t = np.asarray(first, dtype=float).ravel()
+    if t.shape != u.shape:
+        raise InputError(f"data: t has {t.size} samples but u has {u.size}; give one of each "
+                         "per sample")
+    return t, u, y
 
 
 @contextlib.contextmanager

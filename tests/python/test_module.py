@@ -49,6 +49,20 @@ class ReadMeasurement(unittest.TestCase):
             hb.read_measurement(CORPUS / "good.csv", columns="t=time")
 
 
+    def test_lab_files_give_their_units(self):
+        m = hb.read_measurement(CORPUS / "lab_german_ms.csv")
+        np.testing.assert_array_equal(m.t, [0, 0.001, 0.002])
+        np.testing.assert_array_equal(m.u, [0, 1.5, 2])
+        self.assertEqual((m.u_unit, m.y_unit), ("V", "µm"))
+        m = hb.read_measurement(CORPUS / "lab_tab.tsv", delimiter="tab")
+        np.testing.assert_array_equal(m.y, [0, 0.5, 1.5])
+
+    def test_the_namespace_lists_the_api_only(self):
+        self.assertNotIn("np", dir(hb))
+        self.assertNotIn("json", dir(hb))
+        self.assertIn("fit", dir(hb))
+
+
 class Commands(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -84,6 +98,29 @@ class Commands(unittest.TestCase):
         np.testing.assert_allclose(c.y, hb.read_measurement(DATA).y, rtol=1e-15, atol=0)
         residual = c.y - c.y_model
         self.assertAlmostEqual(c.rmse, float(np.sqrt(np.mean(residual ** 2))), places=12)
+
+    def test_arrays_are_taken_where_a_file_is(self):
+        m = hb.read_measurement(DATA)
+        from_arrays = hb.fit((m.t, m.u, m.y), "hysteresis,msd", **QUICK_FIT)
+        from_step = hb.fit((m.sample_time, m.u, m.y), "hysteresis,msd", **QUICK_FIT)
+        from_measurement = hb.fit(m, "hysteresis,msd", **QUICK_FIT)
+        # A Measurement keeps its segments, so it is the file to the last bit
+        # (the units of the file's truth file are not in it).
+        def values(f):
+            return [p["value"] for p in f.record["parameters"]]
+        self.assertEqual(values(from_measurement), values(self.fit))
+        # Bare arrays have none: they are a file of t, u, y to the last bit.
+        plain = self.dir / "plain.csv"
+        np.savetxt(plain, np.column_stack([m.t, m.u, m.y]), delimiter=",", header="t,u,y",
+                   comments="", fmt="%.17g")
+        self.assertEqual(values(from_arrays), values(hb.fit(plain, "hysteresis,msd", **QUICK_FIT)))
+        self.assertEqual(from_step.record["holdout"], from_arrays.record["holdout"])
+        self.assertGreater(from_step.rmse, 0)
+        self.assertEqual(hb.compare(m, self.fit).rmse, hb.compare(DATA, self.fit).rmse)
+        with self.assertRaisesRegex(hb.InputError, "u has 11000 samples but y has 3"):
+            hb.fit((m.t, m.u, m.y[:3]), "msd")
+        with self.assertRaisesRegex(hb.InputError, "give a file path, \\(t, u, y\\)"):
+            hb.fit(42, "msd")
 
     def test_diagnose_has_a_verdict(self):
         d = hb.diagnose(DATA, fit=self.fit, candidates="arx,asymmetry", candidate_restarts=1)
