@@ -1,5 +1,6 @@
 # Thin wrapper over CMake. The two commands a new user needs:
-#   make demo   install what is missing, build, run the default experiment
+#   make demo   install what is missing, build the program and the Python module,
+#               run the default experiment
 #   make test   install what is missing, build, run the whole test suite
 #   make paper  build, then regenerate results/paper/ (the seed papers' comparisons)
 #   make test-quick  build, then the tests labelled unit and integration (not the
@@ -18,7 +19,7 @@ configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 demo: configure
-	@$(CMAKE_BUILD) --target hystbench
+	@$(CMAKE_BUILD) --target demo_programs
 	@$(BUILD)/hystbench run benchmarks/experiments/demo.json --out $(BUILD)/demo --force
 
 test: configure

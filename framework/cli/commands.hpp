@@ -14,6 +14,8 @@ using Action = std::function<void()>;
 // Adds --plugin PATH.so (repeatable) to a subcommand; the returned action
 // loads the libraries, to be called before anything looks at the registry.
 Action add_plugin_option(CLI::App& command);
+// Adds --quiet, which silences the progress display (status_line.hpp).
+void add_quiet_option(CLI::App& command);
 // Adds --reference LABEL, the algorithm the statistics table compares
 // against (`run` and `report` share it).
 void add_reference_option(CLI::App& command, std::string& reference);

@@ -51,7 +51,7 @@ void control(const ControlOptions& o) {
   const ControlSetup setup = build_control_setup(x);  // every input error surfaces here
   const auto dir = o.output.prepare("control.json");
 
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   std::mutex m;
   const ControlResults results = run_control(x, setup, [&](int done, int total) {
     std::lock_guard lock(m);
@@ -85,6 +85,7 @@ Action add_control_command(CLI::App& app) {
       "experiment seed (default: the experiment's)");
   add_output_options(cmd, o->output);
   add_threads_option(cmd);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

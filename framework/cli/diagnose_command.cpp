@@ -62,7 +62,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   DataSource source = o.data.source();
   const Measurement m = source.load();
   HoldoutSpec holdout = o.data.holdout_spec();
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   FitOptions fit = o.fit.fit_options();
   DiagnoseOptions options = o.diagnose.diagnose_options(fit, source);
   // Either a fit to start from (its scales, so its parameters keep their
@@ -103,6 +103,7 @@ Action add_diagnose_command(CLI::App& app) {
   add_fit_options(cmd, o->fit);
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, cmd, load_plugins] {
     load_plugins();

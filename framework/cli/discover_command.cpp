@@ -79,7 +79,7 @@ void run_discover(DiscoverCommandOptions& o) {
   if (o.resume) restored = read_checkpoint(o.output.out, checkpoint_context(ctx), data, options);
   const auto dir = o.resume ? std::filesystem::path(o.output.out) : o.output.prepare("ladder.json");
 
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   std::size_t step = restored ? restored->diagnoses.size() : 0;
   options.diagnose.fit.status = [&](const std::string& s) {
     status.show("discover step " + std::to_string(step) + ": " + s);
@@ -129,6 +129,7 @@ Action add_discover_command(CLI::App& app) {
   add_fit_options(cmd, o->fit);
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

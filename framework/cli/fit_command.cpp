@@ -33,7 +33,7 @@ void fit(FitCommandOptions& o) {
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
 
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   options.status = [&](const std::string& s) { status.show("fit " + model.text() + ": " + s); };
   const FitResult result = fit_model(model, data, options);
   status.finish();
@@ -67,6 +67,7 @@ Action add_fit_command(CLI::App& app) {
   // --fit simulate the model as it was fitted.
   cli::add_input_hold_option(cmd, o->input_hold, "the model then streams exactly as fitted");
   add_output_options(cmd, o->output);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

@@ -192,7 +192,7 @@ void run(const RunOptions& o) {
   if (!resumed.warning.empty()) std::cerr << "hystbench: warning: " << resumed.warning << "\n";
   announce(experiment, *in.problem, in.range, threads, o.resume ? std::optional<long>(kept) : std::nullopt,
            total - kept);
-  Progress progress(total - kept, stderr_is_terminal());
+  Progress progress(total - kept);
   const auto results = cluster::run_campaign(*in.problem, experiment,
                                     {threads, [&](const TrialResult& r) {
                                        // Under the interrupt lock: Ctrl-C never tears a line.
@@ -237,6 +237,7 @@ Action add_run_command(CLI::App& app) {
   cmd->add_flag("--resume", o->resume,
                 "keep the finished trials in the --out folder (after Ctrl-C or a crash) and run "
                 "only the missing ones");
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     cluster::run_on_all_ranks([&] {

@@ -46,7 +46,7 @@ void svr(const SvrOptions& o) {
   if (o.seed_given) x.search.seed = o.seed;
   const auto dir = o.output.prepare("svr.json");
   const int threads = omp_get_max_threads();
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   const SvrResults r = run_svr(x, threads, [&](const std::string& s) { status.show("svr: " + s); });
   status.finish();
   write_svr_report(dir, x, r, threads);
@@ -71,6 +71,7 @@ Action add_svr_command(CLI::App& app) {
       "seed of the hyperparameter search (default: the experiment's)");
   add_output_options(cmd, o->output);
   add_threads_option(cmd);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

@@ -57,7 +57,7 @@ void track(const TrackOptions& o) {
   if (o.seed_given) x.seed = o.seed;
   TrackingResults r = design_tracking(x);  // an impossible design is bad input too
   const auto dir = o.output.prepare("tracking.json");
-  StatusLine status(stderr_is_terminal());
+  StatusLine status;
   const int threads = omp_get_max_threads();
   run_tracking_rows(x, r, [&](const std::string& s) { status.show("track: " + s); });
   status.finish();
@@ -93,6 +93,7 @@ Action add_track_command(CLI::App& app) {
       "seed of the sensor noise and the nominal model's excitation (default: the experiment's)");
   add_output_options(cmd, o->output);
   add_threads_option(cmd);
+  add_quiet_option(*cmd);
   return [o] { track(*o); };
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <stdexcept>
 
 namespace hystbench {
@@ -64,6 +65,18 @@ std::string closest_name(const std::vector<std::string>& names, const std::strin
     if (d < best_distance) best = name, best_distance = d;
   }
   return best;
+}
+
+std::string time_now(const char* format, bool utc) {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  if (utc)
+    gmtime_r(&now, &tm);
+  else
+    localtime_r(&now, &tm);
+  char buf[64];
+  std::strftime(buf, sizeof buf, format, &tm);
+  return buf;
 }
 
 }  // namespace hystbench

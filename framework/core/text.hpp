@@ -15,6 +15,8 @@ std::string number_text(double v);
 // One number through a printf format ("%.3g", "%.1f"), for sentences in
 // reports.
 std::string format_number(const char* format, double v);
+// The current time by strftime's `format`, in UTC or in local time.
+std::string time_now(const char* format, bool utc);
 
 // Position of `name` in `names`; throws std::invalid_argument naming `what`
 // and the valid names. Used to map option strings to enums.

@@ -5,6 +5,7 @@
 #include <ctime>
 
 #include "framework/core/plugin_loader.hpp"
+#include "framework/core/text.hpp"
 
 namespace hystbench {
 namespace {
@@ -14,15 +15,6 @@ constexpr const char* kCompiler = "clang " __clang_version__;
 #else
 constexpr const char* kCompiler = "gcc " __VERSION__;
 #endif
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 std::string host_name() {
   char buf[256] = {};
@@ -38,7 +30,7 @@ nlohmann::json provenance(int threads, std::uint64_t seed) {
           {"flags", HYSTBENCH_CXX_FLAGS},
           {"threads", threads},
           {"seed", seed},
-          {"date", utc_now()},
+          {"date", time_now("%Y-%m-%dT%H:%M:%SZ", true)},
           {"host", host_name()}};
   for (const auto& p : loaded_plugins())
     j["plugins"].push_back({{"path", p.path}, {"names", p.names}});

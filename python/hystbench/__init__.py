@@ -31,9 +31,14 @@ except ImportError as e:  # a python3 other than the one the module was built fo
     raise ImportError("hystbench needs numpy: install python3-numpy and use Debian's "
                       "/usr/bin/python3, the interpreter the module is built for") from e
 
-from ._core import InputError, read_mat_vector, version
-from ._core import read_measurement as _read_measurement
-from ._core import run_command as _run_command
+try:
+    from ._core import InputError, read_mat_vector, version
+    from ._core import read_measurement as _read_measurement
+    from ._core import run_command as _run_command
+except ImportError as e:  # the source folder python/, or a build without the module
+    raise ImportError("hystbench's compiled part (hystbench._core) is missing: build it with "
+                      "`make demo` (needs pybind11-dev python3-dev python3-numpy) and use "
+                      "PYTHONPATH=build/python, not the source folder python/") from e
 
 __all__ = ["InputError", "Measurement", "Fit", "Comparison", "Diagnosis", "Discovery", "Run",
            "read_measurement", "read_mat_vector", "fit", "simulate", "compare", "diagnose",
