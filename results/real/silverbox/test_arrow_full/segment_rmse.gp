@@ -9,7 +9,7 @@
 
 set encoding utf8
 rmse_label = "RMSE [V]"
-sigma = 0.0006880361661  # noise floor estimate
+sigma = 3.040758659e-05  # noise floor estimate
 set title "Error per segment — Model feedback_hysteresis,offset against test_arrow_full.csv" noenhanced
 set ylabel rmse_label
 set yrange [0:*]

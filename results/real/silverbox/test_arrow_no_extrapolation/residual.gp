@@ -9,7 +9,7 @@
 
 set encoding utf8
 residual_label = "Residual y − ŷ [V]"
-sigma = 0.0005473193227  # noise floor estimate
+sigma = 1.698489e-05  # noise floor estimate
 set title "Residual — Model feedback_hysteresis,offset against test_arrow_no_extrapolation.csv" noenhanced offset 0, 1.2
 set xlabel "Time t [s]"
 set ylabel residual_label

@@ -9,7 +9,7 @@
 
 set encoding utf8
 rmse_label = "RMSE [V]"
-sigma = 0.0005473193227  # noise floor estimate
+sigma = 1.698489e-05  # noise floor estimate
 set title "Error per segment — Model feedback_hysteresis,offset against test_arrow_no_extrapolation.csv" noenhanced
 set ylabel rmse_label
 set yrange [0:*]

@@ -9,7 +9,7 @@
 
 set encoding utf8
 rmse_label = "RMSE [V]"
-sigma = 0.001005966643  # noise floor estimate
+sigma = 2.717069283e-05  # noise floor estimate
 set title "Error per segment — Model feedback_hysteresis,offset against test_multisine.csv" noenhanced
 set ylabel rmse_label
 set yrange [0:*]

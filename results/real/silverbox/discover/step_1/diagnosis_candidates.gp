@@ -11,7 +11,7 @@ set encoding utf8
 bar = 0.36  # bar width; a group is two bars
 current_estimation = 0.005505805368  # current model, estimation RMSE
 current_heldout = 0.005478558374  # current model, held-out RMSE
-sigma = 0.001009643292  # noise floor estimate
+sigma = 2.695630233e-05  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

@@ -9,7 +9,7 @@
 
 set encoding utf8
 rmse_label = "RMSE [V]"
-sigma = 0.001009643292  # noise floor estimate
+sigma = 2.695630233e-05  # noise floor estimate
 set title "Error per segment — Current model msd" noenhanced
 set ylabel rmse_label
 set yrange [0:*]

@@ -9,7 +9,7 @@
 
 set encoding utf8
 residual_label = "Residual y − ŷ [V]"
-sigma = 0.001009643292  # noise floor estimate
+sigma = 2.695630233e-05  # noise floor estimate
 set title "Residual — Current model feedback_hysteresis,offset" noenhanced offset 0, 1.2
 set xlabel "Time t [s]"
 set ylabel residual_label
