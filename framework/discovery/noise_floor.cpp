@@ -117,7 +117,7 @@ int spectral_segment(Eigen::Index n) {
 }
 
 // σ from the output's power where the input has none, for an input that
-// reaches above fs/6; nullopt-like "none" when that does not apply.
+// reaches above fs/6; method "none" when that does not apply.
 NoiseFloor spectral_noise_floor(const Eigen::VectorXd& u, const Eigen::VectorXd& y) {
   NoiseFloor f{kNaN, "none", 0, 0, 0};
   const int length = spectral_segment(u.size());

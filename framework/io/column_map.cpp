@@ -25,6 +25,15 @@ std::string* role_field(ColumnMap& map, std::string_view role) {
   return nullptr;
 }
 
+char delimiter_from_json(const nlohmann::json& value, const std::string& where) {
+  const char* known[] = {"auto", "comma", "semicolon", "tab"};
+  if (value.is_string())
+    for (const char* name : known)
+      if (value.get<std::string>() == name) return ColumnMap::parse_delimiter(name);
+  throw InputError(where + ": " + value.dump() +
+                   " is not a delimiter; use \"auto\", \"comma\", \"semicolon\" or \"tab\"");
+}
+
 }  // namespace
 
 const char* delimiter_name(char d) {
@@ -76,12 +85,7 @@ ColumnMap ColumnMap::from_json(const nlohmann::json& j, const std::string& where
                              "{\"t\": \"t_s\", \"u\": \"u_N\", \"y\": \"y_m\"}, got " + j.dump());
   for (const auto& [key, value] : j.items()) {
     if (key == "delimiter") {
-      try {
-        map.delimiter = parse_delimiter(value.is_string() ? value.get<std::string>() : "?");
-      } catch (const InputError&) {
-        throw InputError(where + ".delimiter: " + value.dump() +
-                         " is not a delimiter; use \"auto\", \"comma\", \"semicolon\" or \"tab\"");
-      }
+      map.delimiter = delimiter_from_json(value, where + ".delimiter");
       continue;
     }
     std::string* field = role_field(map, key);

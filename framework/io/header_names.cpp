@@ -5,6 +5,9 @@
 #include <span>
 #include <utility>
 
+#include "framework/core/text.hpp"
+#include "framework/io/measurement_csv_lines.hpp"
+
 namespace hystbench {
 namespace {
 
@@ -22,11 +25,7 @@ constexpr std::string_view kInputNames[] = {
 constexpr std::string_view kOutputNames[] = {
     "y", "output", "displacement", "weg", "position", "ausgang", "auslenkung", "y_out", "stroke"};
 
-std::string_view trimmed(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
+using measurement_csv::trim;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -56,17 +55,17 @@ std::span<const std::string_view> names_of(ColumnRole role) {
 }  // namespace
 
 HeaderName split_unit(std::string_view name) {
-  name = trimmed(name);
+  name = trim(name);
   for (const auto [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
     const auto at = name.rfind(open);
     if (!name.empty() && name.back() == close && at != std::string_view::npos && at > 0) {
-      const auto unit = trimmed(name.substr(at + 1, name.size() - at - 2));
-      return {std::string(trimmed(name.substr(0, at))), spelled(unit)};
+      const auto unit = trim(name.substr(at + 1, name.size() - at - 2));
+      return {std::string(trim(name.substr(0, at))), spelled(unit)};
     }
   }
   const auto at = name.find_last_of("_ /");
   if (at != std::string_view::npos && at > 0 && known_unit(name.substr(at + 1)))
-    return {std::string(trimmed(name.substr(0, at))), spelled(name.substr(at + 1))};
+    return {std::string(trim(name.substr(0, at))), spelled(name.substr(at + 1))};
   return {std::string(name), {}};
 }
 
@@ -80,9 +79,8 @@ const char* role_name(ColumnRole role) {
 }
 
 std::string role_synonyms(ColumnRole role) {
-  std::string out;
-  for (const auto name : names_of(role)) out += (out.empty() ? "" : ", ") + std::string(name);
-  return out;
+  const auto names = names_of(role);
+  return join(std::vector<std::string>(names.begin(), names.end()));
 }
 
 std::vector<std::size_t> columns_named_as(const std::vector<std::string>& names, ColumnRole role) {
