@@ -1,7 +1,8 @@
 # Thin wrapper over CMake. The two commands a new user needs:
 #   make demo   install what is missing, build the program and the Python module,
 #               run the default experiment
-#   make test   install what is missing, build, run the whole test suite
+#   make test   install what is missing, build (failing on any compiler warning),
+#               run the whole test suite
 #   make paper  build, then regenerate results/paper/ (the seed papers' comparisons)
 #   make test-quick  build, then the tests labelled unit and integration (not the
 #                    slow hidden-effect cases): about a minute, for the edit loop
@@ -23,7 +24,7 @@ demo: configure
 	@$(BUILD)/hystbench run benchmarks/experiments/demo.json --out $(BUILD)/demo --force
 
 test: configure
-	@$(CMAKE_BUILD)
+	@scripts/build-without-warnings.sh $(BUILD) $(JOBS)
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 test-quick: configure

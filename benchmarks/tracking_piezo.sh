@@ -11,12 +11,12 @@
 #
 #   benchmarks/tracking_piezo.sh [OUT_DIR]      # default results/tracking
 #
-# The test record is not committed: it is remade bit for bit when missing.
+# The test record is not committed: the experiments simulate it when missing
+# (benchmarks/experiments/svr_piezo/records.json), bit for bit.
 # Needs a built build/hystbench (or HYSTBENCH=path). About a minute on 2 cores.
 set -euo pipefail
 out=${1:-results/tracking}
 hystbench=${HYSTBENCH:-build/hystbench}
-[[ -f results/svr/data/test.csv ]] || HYSTBENCH="$hystbench" benchmarks/svr_piezo_data.sh results/svr/data
 mkdir -p "$out"
 for run in piezo piezo_2khz piezo_svr; do
   "$hystbench" track "benchmarks/experiments/tracking_$run.json" --out "$out/$run" --force | tee "$out/$run.log"

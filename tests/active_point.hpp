@@ -2,7 +2,7 @@
 // A parameter point at which every effect of a model acts: gain 1.3 and
 // every other parameter a fraction `step` of the way from its neutral value
 // to a bound (the upper one when there is room).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/model/model.hpp"
 

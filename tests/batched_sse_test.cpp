@@ -16,6 +16,12 @@
 namespace hystbench {
 namespace {
 
+EvaluationOptions on_threads(int threads) {
+  EvaluationOptions o;
+  o.threads = threads;
+  return o;
+}
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 const Measurement& data() {
@@ -59,7 +65,7 @@ Eigen::VectorXd scalar(const Eigen::MatrixXd& X, BoucWenForm form) {
 
 Eigen::VectorXd batched(const Eigen::MatrixXd& X, BoucWenForm form, int threads = 1) {
   Eigen::VectorXd f(X.cols());
-  hammerstein_sse_batched(X, data().u, data().y, data().sample_time, form, f, {threads});
+  hammerstein_sse_batched(X, data().u, data().y, data().sample_time, form, f, on_threads(threads));
   return f;
 }
 
@@ -81,7 +87,9 @@ TEST_P(BatchedSse, UniformCandidatesInTheBoundsEqualTheScalarPath) {
 TEST_P(BatchedSse, CandidatesNearTheTruthEqualTheScalarPath) {
   const Eigen::MatrixXd X = near_truth(40, 3);
   const Eigen::VectorXd expected = scalar(X, GetParam());
-  if (GetParam() == BoucWenForm::Increment) EXPECT_TRUE(expected.allFinite());
+  if (GetParam() == BoucWenForm::Increment) {
+    EXPECT_TRUE(expected.allFinite());
+  }
   expect_identical(expected, batched(X, GetParam()));
 }
 
@@ -108,8 +116,9 @@ TEST_P(BatchedSse, UnstableCandidateGivesInfWithoutPoisoningItsBlock) {
   ASSERT_EQ(expected[4], kInf);
   const Eigen::VectorXd f = batched(X, GetParam());
   expect_identical(expected, f);
-  if (GetParam() == BoucWenForm::Increment)
+  if (GetParam() == BoucWenForm::Increment) {
     for (const int i : {0, 1, 3, 5, 7, 8}) EXPECT_LT(f[i], kInf) << "candidate " << i;
+  }
 }
 
 TEST_P(BatchedSse, DivergingBoucWenStateGivesInfWithoutPoisoningItsBlock) {
@@ -135,8 +144,8 @@ TEST_P(BatchedSse, ProblemEvaluateUsesTheBatchedKernelWithAnyThreadCount) {
   X << uniform_candidates(25, 13), near_truth(25, 17);
   const Eigen::VectorXd expected = scalar(X, GetParam());
   Eigen::VectorXd one(X.cols()), two(X.cols()), plain(X.cols());
-  problem.evaluate_with(X, one, {1});
-  problem.evaluate_with(X, two, {2});
+  problem.evaluate_with(X, one, on_threads(1));
+  problem.evaluate_with(X, two, on_threads(2));
   problem.evaluate(X, plain);
   expect_identical(expected, one);
   expect_identical(expected, two);

@@ -3,7 +3,7 @@
 // budgets and IPOP restarts.
 #include <gtest/gtest.h>
 
-#include <Eigen/QR>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 
 #include "framework/core/error.hpp"

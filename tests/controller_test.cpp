@@ -35,7 +35,9 @@ void expect_steps(const std::vector<double>& got, const std::vector<double>& wan
 TEST(Controllers, AllSixAreRegisteredWithCitations) {
   for (const char* name : {"off", "fxlms", "fxnlms", "vss_fxlms", "vss_kwong", "vss_aboulnasr"}) {
     const ControllerInfo& info = ControllerRegistry::instance().find(name, "test");
-    if (std::string(name) != "off") EXPECT_FALSE(info.citation.empty()) << name;
+    if (std::string(name) != "off") {
+      EXPECT_FALSE(info.citation.empty()) << name;
+    }
   }
   EXPECT_TRUE(ControllerRegistry::instance().find("vss_fxlms", "t").reconstructed);
   EXPECT_FALSE(ControllerRegistry::instance().find("fxnlms", "t").reconstructed);

@@ -4,7 +4,7 @@
 // the close-call rule of a diagnosis.
 #include <gtest/gtest.h>
 
-#include <Eigen/Dense>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <random>
 

@@ -3,7 +3,7 @@
 // bounds, units, scale invariance, failure as false).
 #include <gtest/gtest.h>
 
-#include <Eigen/SVD>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -20,6 +20,15 @@
 
 namespace hystbench {
 namespace {
+
+CampaignOptions options(int threads, TrialRange trials,
+                        std::function<void(const TrialResult&)> on_trial_done = nullptr) {
+  CampaignOptions o;
+  o.threads = threads;
+  o.trials = trials;
+  o.on_trial_done = std::move(on_trial_done);
+  return o;
+}
 using test_support::contains;
 using test_support::read;
 
@@ -88,7 +97,7 @@ const nlohmann::json kDeAndThrowing = {
 TEST(FailedTrials, ThrowingOptimizerIsRecordedAndTheCampaignGoesOn) {
   const Experiment e = experiment(kDeAndThrowing);
   const FunctionProblem sphere("sphere", 2, -5.12, 5.12);
-  const auto results = run_campaign(sphere, e, {2, nullptr, {0, 6}});
+  const auto results = run_campaign(sphere, e, options(2, {0, 6}));
   ASSERT_EQ(results.size(), 3u);
   for (const auto& r : results[0]) EXPECT_FALSE(r.failed()) << r.message;
   for (const auto& r : results[1]) {
@@ -105,7 +114,7 @@ TEST(FailedTrials, ThrowingOptimizerIsRecordedAndTheCampaignGoesOn) {
 TEST(FailedTrials, EveryCandidateDivergingIsAFailedTrialWithAMessage) {
   const Experiment e = experiment({{{"name", "de"}, {"params", {{"np", 10}}}}}, 2);
   const NanEverywhere problem;
-  const auto results = run_campaign(problem, e, {1, nullptr, {0, 2}});
+  const auto results = run_campaign(problem, e, options(1, {0, 2}));
   for (const auto& r : results[0]) {
     EXPECT_TRUE(r.failed());
     EXPECT_EQ(r.evaluations, 400) << "the budget was still spent";
@@ -119,7 +128,7 @@ TEST(FailedTrials, MessageIsKeptInTrialsJsonl) {
   const FunctionProblem sphere("sphere", 2, -5.12, 5.12);
   {
     TrialLog log(dir.path() / "trials.jsonl");
-    run_campaign(sphere, e, {1, [&](const TrialResult& r) { log.append(r); }, {0, 2}});
+    run_campaign(sphere, e, options(1, {0, 2}, [&](const TrialResult& r) { log.append(r); }));
   }
   long failed = 0;
   for (const auto& r : read_trial_log(dir.path() / "trials.jsonl").trials)
@@ -136,7 +145,7 @@ TEST(FailedTrials, TableCountsThemAndSummaryLeavesThemOut) {
   test_support::TempDir dir;
   const Experiment e = experiment(kDeAndThrowing);
   const FunctionProblem sphere("sphere", 2, -5.12, 5.12);
-  const auto results = run_campaign(sphere, e, {2, nullptr, {0, 6}});
+  const auto results = run_campaign(sphere, e, options(2, {0, 6}));
   const auto written = write_report(dir.path(), e, sphere, results, 2);
   EXPECT_EQ(written.summaries[1].failed, 6);
   EXPECT_TRUE(std::isnan(written.summaries[1].best)) << "no statistics from failed trials";
@@ -149,7 +158,7 @@ TEST(FailedTrials, TableCountsThemAndSummaryLeavesThemOut) {
 TEST(FailedTrials, RankLastAndNeverCountAsSuccesses) {
   const Experiment e = experiment(kDeAndThrowing);
   const FunctionProblem sphere("sphere", 2, -5.12, 5.12);
-  const auto results = run_campaign(sphere, e, {2, nullptr, {0, 6}});
+  const auto results = run_campaign(sphere, e, options(2, {0, 6}));
   // Target 5 (as 1.01 x a noise floor): random search gets below it within
   // 50 points on the 2-d sphere almost surely; failed trials still must not
   // count as successes.

@@ -100,9 +100,11 @@ TEST(HiddenEffectFile, EveryCatalogEffectHasACase) {
         << "no hidden-effect case for " << info->name;
   EXPECT_NE(std::find(effects.begin(), effects.end(), "none"), effects.end());
   // A case left out of the test suite must say why.
-  for (const auto& c : file["cases"])
-    if (!c.value("in_test_suite", true))
+  for (const auto& c : file["cases"]) {
+    if (!c.value("in_test_suite", true)) {
       EXPECT_FALSE(c.value("reason", std::string()).empty()) << c.dump();
+    }
+  }
 }
 
 // The nesting invariant (framework/discovery/pruning.hpp): every rung fits
@@ -112,13 +114,15 @@ void expect_nested_models_fit_at_least_as_well(const Ladder& ladder) {
   const double margin = 1.0 + kNestingTolerance;
   for (std::size_t k = 0; k < ladder.steps.size(); ++k) {
     const LadderStep& s = ladder.steps[k];
-    for (const auto& sub : s.sub_models)
+    for (const auto& sub : s.sub_models) {
       EXPECT_LE(s.errors.sse, sub.sse * margin) << "step " << k << ": " << s.model.text() << " against " << sub.model;
+    }
     if (k == 0) continue;
     const LadderStep& before = ladder.steps[k - 1];
     const auto effects = before.model.effects();
-    if (std::all_of(effects.begin(), effects.end(), [&](const std::string& e) { return s.model.has(e); }))
+    if (std::all_of(effects.begin(), effects.end(), [&](const std::string& e) { return s.model.has(e); })) {
       EXPECT_LE(s.errors.sse, before.errors.sse * margin) << "step " << k << " against step " << k - 1;
+    }
   }
 }
 
@@ -221,7 +225,8 @@ TEST(SingleFrequency, DiscoveryKeepsHysteresisAndSaysWhyTheRecordCannotConfirmIt
   };
   std::string trace;
   for (const auto& step : ladder.steps)
-    trace += "\n" + step.model.text() + " (+" + step.added + ", −" + join(step.removed, ",") + "): " + step.attribution;
+    trace.append("\n").append(step.model.text()).append(" (+").append(step.added).append(", −")
+        .append(join(step.removed, ",")).append("): ").append(step.attribution);
   std::printf("[ single frequency ] ladder:%s\n", trace.c_str());
   EXPECT_TRUE(has("hysteresis")) << trace;
   EXPECT_TRUE(has("offset")) << trace;

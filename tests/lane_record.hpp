@@ -2,7 +2,7 @@
 // A record and candidates for checking that an effect's batched form gives
 // exactly its one-candidate values (tests/effect_lanes_test.cpp, and
 // tests/lane_check.cpp for a generated effect built as a plugin).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <numbers>
 

@@ -13,7 +13,7 @@
 // the drive linear between samples; u' is the backward difference of u.
 // The drive is a multisine whose amplitude rises and falls, so that the
 // record holds small and large amplitudes at every frequency.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>

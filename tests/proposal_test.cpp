@@ -259,7 +259,9 @@ TEST(Proposal, PlantedCubicStiffnessIsProposedInsideTheDynamics) {
   planted::System s;
   s.cubic = 0.01;
   const Proposal p = expect_first_proposal(s, "x³", TermStage::Dynamics);
-  if (!p.terms.empty()) EXPECT_LT(p.terms[0].coefficient, 0.0);  // a hardening spring: a restoring force
+  if (!p.terms.empty()) {
+    EXPECT_LT(p.terms[0].coefficient, 0.0);  // a hardening spring: a restoring force
+  }
 }
 
 TEST(Proposal, PlantedPlayBesideTheGainIsProposedAsTheStateOfAPlayOperator) {
@@ -274,14 +276,18 @@ TEST(Proposal, PlantedDriveDependentStiffnessIsProposedAsAProductAcrossTheChain)
   s.drive_stiffness = 0.03;
   // w = gain·v here, so |v|·x and |w|·x are one column: the drive is said.
   const Proposal p = expect_first_proposal(s, "|v|·x", TermStage::Dynamics);
-  if (!p.terms.empty()) EXPECT_LT(p.terms[0].coefficient, 0.0);  // a restoring force
+  if (!p.terms.empty()) {
+    EXPECT_LT(p.terms[0].coefficient, 0.0);  // a restoring force
+  }
 }
 
 TEST(Proposal, PlantedSquareRootSensorLawIsProposedAtTheOutput) {
   planted::System s;
   s.root_gain = 0.1;
   const Proposal p = expect_first_proposal(s, "sign(y)·√|y|", TermStage::Output);
-  if (!p.terms.empty()) EXPECT_GT(p.terms[0].coefficient, 0.0);
+  if (!p.terms.empty()) {
+    EXPECT_GT(p.terms[0].coefficient, 0.0);
+  }
 }
 
 TEST(Proposal, NothingIsProposedWhenTheModelIsRight) {

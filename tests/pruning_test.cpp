@@ -38,7 +38,7 @@ FitOptions small_fit() {
 }
 
 FitResult at(const Model& model, const Eigen::VectorXd& x, const ModelData& d) {
-  return FitResult{model, x, fit_errors(model, x, d).sse};
+  return FitResult{model, x, fit_errors(model, x, d).sse, 0, 0.0, {}};
 }
 
 TEST(Pruning, AModelOffItsOptimumIsRefittedFromItsBetterSubModelAndKeepsItsEffects) {

@@ -180,7 +180,9 @@ TEST(RankTests, HolmAdjustedValuesAreMonotoneCappedAndAgreeWithRejections) {
     EXPECT_LE(h.adjusted[i], 1.0);
     EXPECT_EQ(h.rejected[i], h.adjusted[i] < 0.05) << i;
     for (std::size_t j = 0; j < p.size(); ++j) {
-      if (p[i] < p[j]) EXPECT_LE(h.adjusted[i], h.adjusted[j]) << i << " " << j;
+      if (p[i] < p[j]) {
+        EXPECT_LE(h.adjusted[i], h.adjusted[j]) << i << " " << j;
+      }
     }
   }
   // 0.5 * 3 = 1.5 is capped at 1, and the larger p-values keep that 1.

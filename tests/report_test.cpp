@@ -2,6 +2,7 @@
 
 #include "tests/temp_dir.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +15,9 @@
 #include "framework/report/convergence.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/tables.hpp"
+#include "framework/report/figure_style.hpp"
+#include "framework/report/gnuplot_script.hpp"
+#include "framework/core/error.hpp"
 
 namespace hystbench {
 namespace {
@@ -65,8 +69,24 @@ ReportContext sample_context() {
   return ctx;
 }
 
+ReportContext seed_layout() {
+  ReportContext ctx = sample_context();
+  ctx.seed_table_layout = true;
+  return ctx;
+}
+
+std::size_t words(const std::string& text) {
+  std::istringstream in(text);
+  std::size_t n = 0;
+  for (std::string w; in >> w;) ++n;
+  return n;
+}
+
+// The caption line of a Markdown table ("**Table.** ..."), without the mark.
+std::string caption_of(const std::string& md) { return md.substr(11, md.find('\n') - 11); }
+
 TEST(TableMarkdown, FormatsNumbersAndBoldsTheLowestPerColumn) {
-  const std::string md = table_markdown(sample_rows(), sample_context());
+  const std::string md = table_markdown(sample_rows(), seed_layout());
   EXPECT_TRUE(contains(md, "| Algorithm | Best fitness value | f_avg | f_max | f_min | f_std | "
                            "Median | Iterations | Evaluations | Failed |"));
   // Columns: best, f_avg, f_max, f_min, f_std, median.
@@ -79,17 +99,40 @@ TEST(TableMarkdown, FormatsNumbersAndBoldsTheLowestPerColumn) {
   EXPECT_TRUE(contains(md, "| broken | — | — | — | — | — | — | — | — | 10/10 |")) << md;
 }
 
+// Best and f_min always agree: the default layout prints one of them, the
+// seed's layout both, and its caption says they coincide.
+TEST(TableMarkdown, BestBesideFminOnlyInTheSeedsLayout) {
+  const std::string md = table_markdown(sample_rows(), sample_context());
+  EXPECT_TRUE(contains(md, "| Algorithm | f_avg | f_max | f_min | f_std | Median | Iterations | Evaluations | "
+                           "Failed |"))
+      << md;
+  EXPECT_FALSE(contains(md, "Best fitness value"));
+  EXPECT_TRUE(contains(md, "| de\\_rand\\_1 | 12.35 | 2.500e+04 | **0.08603** | **1.234e-05** |")) << md;
+  EXPECT_FALSE(contains(caption_of(md), "coincide"));
+  EXPECT_TRUE(contains(caption_of(table_markdown(sample_rows(), seed_layout())), "Best and f_min coincide by definition"));
+  EXPECT_TRUE(contains(table_latex(sample_rows(), seed_layout()), "Best and $f_{\\min}$ coincide by definition"));
+  EXPECT_TRUE(contains(table_method(sample_context()), "table_layout"));
+}
+
+TEST(TableMarkdown, CaptionsFitAPaperAndTheMethodGoesToTheReadme) {
+  for (const ReportContext& ctx : {sample_context(), seed_layout()}) {
+    const std::string caption = caption_of(table_markdown(sample_rows(), ctx));
+    EXPECT_LE(words(caption), 40u) << caption;
+  }
+  EXPECT_TRUE(contains(table_method(sample_context()), "noise floor is the SSE of the true parameters"));
+}
+
 TEST(TableMarkdown, ValuesThatPrintAsTheLowestAreAllBold) {
   // 12031.2 and 12034.9 both print as 1.203e+04: a reader cannot tell them
   // apart, so both are bold; 12051 prints as 1.205e+04 and is not.
   const std::string md = table_markdown({row("a", {12034.9, 1, 1, 0, 1}, 1, 1, 0, 1),
                                          row("b", {12031.2, 2, 2, 0, 2}, 1, 1, 0, 1),
                                          row("c", {12051.0, 3, 3, 0, 3}, 1, 1, 0, 1)},
-                                        sample_context());
+                                        seed_layout());
   EXPECT_TRUE(contains(md, "| a | **1.203e+04** |")) << md;
   EXPECT_TRUE(contains(md, "| b | **1.203e+04** |")) << md;
   EXPECT_TRUE(contains(md, "| c | 1.205e+04 |")) << md;
-  EXPECT_TRUE(contains(md, "lowest printed value per column in bold, ties included")) << md;
+  EXPECT_TRUE(contains(md, "bold: lowest per column")) << md;
 }
 
 TEST(TableMarkdown, CaptionDescribesTheRun) {
@@ -98,14 +141,14 @@ TEST(TableMarkdown, CaptionDescribesTheRun) {
   const std::string caption = md.substr(0, md.find('\n'));
   for (const char* part : {"exp_1 100%", "hammerstein", "10 trials per algorithm",
                            "budget 5000 evaluations", "seed 7",
-                           "Noise floor (SSE of the true parameters): 0.01234"})
+                           "Noise floor 0.01234"})
     EXPECT_TRUE(contains(caption, part)) << part << " missing from: " << caption;
   ctx.noise_floor.reset();
   EXPECT_FALSE(contains(table_markdown(sample_rows(), ctx), "Noise floor"));
 }
 
 TEST(TableLatex, BooktabsFloatWithEscapedTextAndBoldMath) {
-  const std::string tex = table_latex(sample_rows(), sample_context());
+  const std::string tex = table_latex(sample_rows(), seed_layout());
   for (const char* part :
        {"\\begin{table}", "\\centering", "\\caption{", "\\label{tab:exp_1-100-}",
         "\\begin{tabular}{lrrrrrrrrr}", "\\toprule", "\\midrule", "\\bottomrule",
@@ -289,6 +332,55 @@ TEST(ConvergenceFigure, ScriptDrawsMedianAndBandFromFiniteRows) {
   EXPECT_FALSE(contains(dat, "inf"));
 }
 
+// The whole trace shows: the axis ends above the highest upper quartile,
+// 9.5 here (of 10 and 8 at evaluation 2), not 3x a median after 1 % of the budget.
+TEST(ConvergenceFigure, AxisShowsTheWholeTrace) {
+  TempDir dir;
+  const std::vector<ConvergenceCurve> curves{convergence_curve("de_1", two_trials(), 200)};
+  const std::string gp = read(write_convergence_figure(dir.path(), curves, sample_context()));
+  EXPECT_TRUE(contains(gp, "set yrange [*:14.25]")) << gp;
+  EXPECT_FALSE(contains(gp, "start above the axis")) << gp;
+}
+
+// First values astronomically above the rest (a model that diverges at its
+// first candidates) would flatten every curve: the axis stops lower and a
+// label says how high the traces start.
+TEST(ConvergenceFigure, AstronomicalStartsAreClippedAndSaidSo) {
+  TempDir dir;
+  const std::vector<ConvergenceCurve> curves{convergence_curve(
+      "de_1", {trial({{1, 1e30}, {5, 3}, {1000, 1}}, 1000), trial({{1, 1e30}, {6, 2}, {1000, 1}}, 1000)}, 200)};
+  const std::string gp = read(write_convergence_figure(dir.path(), curves, sample_context()));
+  EXPECT_TRUE(contains(gp, "traces start above the axis, up to 1e+30")) << gp;
+  EXPECT_TRUE(contains(gp, "set yrange [*:7.5]")) << gp;  // 3x the median 2.5 after evaluation 10
+}
+
+// The legend goes above the plot area, outside the data.
+TEST(ConvergenceFigure, LegendSitsAboveThePlot) {
+  TempDir dir;
+  const std::vector<ConvergenceCurve> curves{convergence_curve("de_1", two_trials(), 200)};
+  const std::string gp = read(write_convergence_figure(dir.path(), curves, sample_context()));
+  EXPECT_TRUE(contains(gp, "set key outside top center horizontal")) << gp;
+}
+
+// --figure-style paper: no title anywhere, journal widths, 8 pt text.
+TEST(FigureStyle, PaperDropsTitlesAndUsesColumnWidths) {
+  struct Restore {
+    ~Restore() { gnuplot::set_figure_style(gnuplot::FigureStyle::Screen); }
+  } restore;
+  gnuplot::set_figure_style(gnuplot::FigureStyle::Paper);
+  const std::string single = gnuplot::render_all_terminals("f", "  set title \"T\"\n  plot x\n");
+  for (const char* part : {"pdfcairo size 8.5cm,6cm font \"Helvetica,8\"", "pngcairo size 1004,709",
+                           "  unset title\n  plot x"})
+    EXPECT_TRUE(contains(single, part)) << part << " missing from:\n" << single;
+  EXPECT_FALSE(contains(single, "  set title"));
+  EXPECT_TRUE(contains(gnuplot::render_all_terminals("f", "plot x\n", true), "pdfcairo size 17.5cm,12cm"));
+  TempDir dir;
+  const std::vector<ConvergenceCurve> curves{convergence_curve("de_1", two_trials(), 200)};
+  const std::string gp = read(write_convergence_figure(dir.path(), curves, sample_context()));
+  EXPECT_TRUE(contains(gp, "  unset title\n")) << gp;
+  EXPECT_THROW(gnuplot::parse_figure_style("journal", "--figure-style"), InputError);
+}
+
 struct FitData {
   Eigen::VectorXd t, u, y, yhat;
   std::vector<std::string> segments;
@@ -365,6 +457,39 @@ TEST(FitFigures, RejectsMismatchedLengths) {
   d.segments.pop_back();
   EXPECT_THROW(write_fit_figures(dir.path(), "x", d.t, d.u, d.y, d.yhat, d.segments, {}),
                std::invalid_argument);
+}
+
+// A long record is drawn as the range of each curve per bin of samples: a
+// fast segment shows as its envelope, not as a block of ink.
+TEST(FitFigures, LongRecordsAreDrawnAsEnvelopesPerBin) {
+  TempDir dir;
+  const Eigen::Index n = 6000;
+  const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(n, 0.0, 5.999);
+  Eigen::VectorXd y(n);
+  for (Eigen::Index i = 0; i < n; ++i) y[i] = std::sin(2 * M_PI * 50 * t[i]);
+  const Eigen::VectorXd yhat = 0.9 * y;
+  const auto scripts = write_fit_figures(dir.path(), "de", t, y, y, yhat, {}, sample_context());
+  const std::string gp = read(scripts[0]);
+  EXPECT_TRUE(contains(gp, "fit_de_time.dat")) << gp;
+  EXPECT_TRUE(contains(gp, "with filledcurves")) << gp;
+  const std::string dat = read(dir.path() / "fit_de_time.dat");
+  std::istringstream lines(dat);
+  std::string header, first;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  EXPECT_EQ(header, "# t y_min y_max model_min model_max residual_min residual_max");
+  // Bin 0 holds samples 0..3 of the 50 Hz sine at 1 kHz: 0, 0.309, 0.588, 0.809.
+  std::istringstream fields(first);
+  double tm, ymin, ymax, mmin, mmax;
+  fields >> tm >> ymin >> ymax >> mmin >> mmax;
+  EXPECT_DOUBLE_EQ(ymin, 0.0);
+  EXPECT_NEAR(ymax, std::sin(2 * M_PI * 50 * t[3]), 1e-9);
+  EXPECT_NEAR(mmax, 0.9 * ymax, 1e-9);
+  EXPECT_EQ(std::count(dat.begin(), dat.end(), '\n'), 1501);
+  // A short record keeps every sample.
+  const FitData d = fit_data();
+  EXPECT_TRUE(contains(read(write_fit_figures(dir.path(), "short", d.t, d.u, d.y, d.yhat, d.segments,
+                                              sample_context())[0]), "fit_short.csv"));
 }
 
 bool have_gnuplot() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }

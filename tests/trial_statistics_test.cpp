@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "framework/core/error.hpp"
 #include "framework/report/results_merge.hpp"
@@ -108,9 +109,10 @@ TEST(CampaignStatistics, NoTargetLeavesRuntimeEmptyAndIterationBudgetSnapsAtMost
   EXPECT_DOUBLE_EQ(s.rows[0].snapshot_medians[1], 14.5);
   ReportContext ctx;
   ctx.experiment = "t";
-  const std::string md = stats_markdown(s, ctx);
-  EXPECT_NE(md.find("No target fitness is known"), std::string::npos) << md;
-  EXPECT_NE(md.find("of 100 evaluations, the most any trial used"), std::string::npos) << md;
+  const std::string md = stats_markdown(s, ctx), method = stats_method(s);
+  EXPECT_NE(method.find("No target fitness is known"), std::string::npos) << method;
+  EXPECT_NE(method.find("of 100 evaluations, the most any trial used"), std::string::npos) << method;
+  EXPECT_EQ(md.find("Success, ERT"), std::string::npos) << "no target, nothing to say of success: " << md;
   EXPECT_NE(md.find("| B | + |"), std::string::npos) << md;
 }
 
@@ -121,7 +123,7 @@ TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
   const std::string tex = stats_latex(s, ctx);
   for (const char* part : {"\\toprule", "\\midrule", "\\bottomrule", "A\\_1 & ref.", "\\textbf{",
                            "\\multicolumn{7}{l}{1/1/0}", "\\label{tab:exp_1-stats}",
-                           "at $\\alpha = 0.05$", "(1.01 $\\times$ noise floor)"})
+                           "at $\\alpha = 0.05$", "reaching 1"})
     EXPECT_NE(tex.find(part), std::string::npos) << part << " missing from:\n" << tex;
   EXPECT_EQ(tex.find("A_1"), std::string::npos) << "unescaped underscore";
   EXPECT_EQ(tex.find("|"), std::string::npos) << "booktabs tables have no vertical rules";
@@ -129,7 +131,28 @@ TEST(StatsLatex, BooktabsEscapedLabelsBoldAndCounts) {
 
 // Ten trials each: exact; A against B is complete separation, p = 2 / C(20, 10),
 // doubled by Holm over the two comparisons. Eleven trials each: normal.
-TEST(StatsTables, CaptionSaysWhichRankSumDistributionGaveTheP) {
+// A paper's caption: about 40 words at most; the method goes to README.md.
+TEST(StatsTables, CaptionIsShortAndTheMethodHoldsTheTests) {
+  ReportContext ctx;
+  ctx.experiment = "an_experiment";
+  ctx.problem = "hammerstein(default.csv)";
+  ctx.budget = "20000 evaluations";
+  ctx.trials = 30;
+  const auto s = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", 1.0);
+  const std::string md = stats_markdown(s, ctx);
+  const std::string caption = md.substr(0, md.find('\n'));
+  std::istringstream in(caption);
+  std::size_t words = 0;
+  for (std::string w; in >> w;) ++words;
+  EXPECT_LE(words, 41u) << caption;  // "**Table.**" and 40 words
+  for (const char* part : {"rank-sum test against A\\_1", "Holm-corrected", "Success, ERT: reaching 1"})
+    EXPECT_TRUE(contains(caption, part)) << part << " missing from: " << caption;
+  const std::string method = stats_method(s);
+  for (const char* part : {"two-sided Wilcoxon rank-sum test", "(1.01 × noise floor)", "ERT: expected running time"})
+    EXPECT_TRUE(contains(method, part)) << part << " missing from: " << method;
+}
+
+TEST(StatsTables, MethodSaysWhichRankSumDistributionGaveTheP) {
   ReportContext ctx;
   ctx.experiment = "t";
   const auto ten = campaign_statistics(experiment({{"evaluations", 100}}), campaign(), "", {});
@@ -138,15 +161,13 @@ TEST(StatsTables, CaptionSaysWhichRankSumDistributionGaveTheP) {
   const std::string rule =
       " exact (permutation distribution of the rank sum, ties at their mid-ranks) when both "
       "algorithms have ≤ 10 trials, normal approximation with tie and continuity correction above";
-  EXPECT_TRUE(contains(stats_markdown(ten, ctx), rule + " (here exact throughout); Holm-adjusted."));
-  const std::string tex = stats_latex(ten, ctx);
-  EXPECT_TRUE(contains(tex, "have $\\le$ 10 trials")) << tex;
+  EXPECT_TRUE(contains(stats_method(ten), rule + " (here exact throughout); Holm-adjusted."));
 
   const auto eleven = campaign_statistics(experiment({{"evaluations", 100}}),
                                           {trials(0, 10, 1.0, 11), trials(1, 10, 5.0, 11),
                                            trials(2, 10, 1.0, 11)}, "", {});
   EXPECT_FALSE(eleven.rows[1].p_exact);
-  EXPECT_TRUE(contains(stats_markdown(eleven, ctx), "above (here normal throughout); Holm"));
+  EXPECT_TRUE(contains(stats_method(eleven), "above (here normal throughout); Holm"));
 }
 
 TEST(StatsMarkdown, AColumnWhoseValuesAllTieHasNoBoldCell) {

@@ -16,6 +16,8 @@ using Action = std::function<void()>;
 Action add_plugin_option(CLI::App& command);
 // Adds --quiet, which silences the progress display (status_line.hpp).
 void add_quiet_option(CLI::App& command);
+// Adds --figure-style screen|paper (framework/report/figure_style.hpp).
+void add_figure_style_option(CLI::App& command);
 // Adds --reference LABEL, the algorithm the statistics table compares
 // against (`run` and `report` share it).
 void add_reference_option(CLI::App& command, std::string& reference);

@@ -3,7 +3,7 @@
 // model output set against the data: metrics.json, report.md and figures in
 // `dir`, then "model <line>", the headline errors and the files written;
 // with `mat`, also t, u, y, y_model and the residual as that MAT file.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <filesystem>
 #include <string>
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "framework/cli/commands.hpp"
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
@@ -170,6 +171,7 @@ std::filesystem::path OutputOptions::prepare(const std::string& marker) const {
 void add_output_options(CLI::App* cmd, OutputOptions& o) {
   cmd->add_option("--out", o.out, "folder for the results")->required();
   cmd->add_flag("--force", o.force, "replace earlier results in --out");
+  add_figure_style_option(*cmd);
 }
 
 }  // namespace hystbench::cli

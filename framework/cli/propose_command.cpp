@@ -10,6 +10,7 @@
 #include "framework/discovery/effect_source.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/proposal_report.hpp"
+#include "framework/harness/status_line.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/json_file.hpp"
 #include "framework/report/provenance.hpp"
@@ -65,7 +66,7 @@ GeneratedEffect write_effect(const Proposal& p, const ProposeCommandOptions& o, 
     create_output_folder(dir / "effect");
     write_file_atomic(dir / "effect" / (o.name + ".cpp"), text);
     write_file_atomic(dir / "effect" / "CMakeLists.txt", proposed_effect_cmake(o.name));
-    return {o.name, model_with(model, o.name, p.terms[0].term.stage == TermStage::Dynamics)};
+    return {o.name, model_with(model, o.name, p.terms[0].term.stage == TermStage::Dynamics), ""};
   } catch (const InputError& e) {
     return {"", "", e.what()};
   }
@@ -90,7 +91,11 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   const ModelData data = data_for_fit(o.data, fit, source, holdout_given, HoldoutSpec::Mode::Auto);
   const auto dir = o.output.prepare("proposals.json");
 
+  StatusLine status;
+  status.show("propose: regressing the residual of " + fit.model.text() + " on the term library (" +
+              std::to_string(data.size()) + " samples)");
   const Proposal p = propose_terms(fit.model, fit.x, data, o.propose);
+  status.finish();
   const GeneratedEffect effect = write_effect(p, o, source, fit.model, dir);
   nlohmann::json out = p.to_json();
   out["data"] = source.to_json();
@@ -122,6 +127,7 @@ Action add_propose_command(CLI::App& app) {
   cmd->add_option("--max-terms", o->propose.regression.max_terms, "terms proposed at most")->capture_default_str();
   cmd->add_option("--name", o->name, "name of the generated effect")->capture_default_str();
   add_output_options(cmd, o->output);
+  add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, cmd, load_plugins] {
     load_plugins();

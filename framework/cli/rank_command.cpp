@@ -64,6 +64,7 @@ Action add_rank_command(CLI::App& app) {
       ->check(CLI::IsMember({"mean", "median"}))
       ->capture_default_str();
   cmd->add_flag("--force", o->force, "replace a ranking already in the --out folder");
+  add_figure_style_option(*cmd);
   // Accepted as by every command that reads results, so that a plugin path is
   // never taken for a results folder.
   auto load_plugins = add_plugin_option(*cmd);

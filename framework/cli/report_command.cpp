@@ -137,6 +137,7 @@ Action add_report_command(CLI::App& app) {
                   "folder that relative data paths of the experiment resolve against (default: "
                   "the experiment file's folder recorded by `run`)");
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
+  add_figure_style_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
   return [o, load_plugins] {
     load_plugins();

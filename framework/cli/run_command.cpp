@@ -234,6 +234,7 @@ Action add_run_command(CLI::App& app) {
                   "seeds they have in the full run; merge slices with `hystbench report`");
   add_reference_option(*cmd, o->reference);
   cmd->add_flag("--force", o->force, "replace results already in the --out folder");
+  add_figure_style_option(*cmd);
   cmd->add_flag("--resume", o->resume,
                 "keep the finished trials in the --out folder (after Ctrl-C or a crash) and run "
                 "only the missing ones");

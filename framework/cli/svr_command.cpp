@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/experiment_records.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/threads_option.hpp"
@@ -42,7 +43,7 @@ void print_summary(const SvrExperiment& x, const SvrResults& r) {
 }
 
 void svr(const SvrOptions& o) {
-  SvrExperiment x = SvrExperiment::load(o.experiment);  // every input error surfaces here
+  SvrExperiment x = load_with_records<SvrExperiment>(o.experiment, std::cout);  // every input error surfaces here
   if (o.seed_given) x.search.seed = o.seed;
   const auto dir = o.output.prepare("svr.json");
   const int threads = omp_get_max_threads();

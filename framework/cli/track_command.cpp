@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/experiment_records.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/threads_option.hpp"
@@ -53,7 +54,7 @@ void print_summary(const TrackingExperiment& x, const TrackingResults& r) {
 }
 
 void track(const TrackOptions& o) {
-  TrackingExperiment x = TrackingExperiment::load(o.experiment);  // every input error surfaces here
+  TrackingExperiment x = load_with_records<TrackingExperiment>(o.experiment, std::cout);  // every input error surfaces here
   if (o.seed_given) x.seed = o.seed;
   TrackingResults r = design_tracking(x);  // an impossible design is bad input too
   const auto dir = o.output.prepare("tracking.json");

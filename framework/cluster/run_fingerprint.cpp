@@ -1,6 +1,6 @@
 #include "framework/cluster/run_fingerprint.hpp"
 
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 
 namespace hystbench::cluster {

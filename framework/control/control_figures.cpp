@@ -38,15 +38,16 @@ std::string traces_csv(const std::vector<Curve>& cs, const ControlExperiment& x,
   std::string out = "t";
   for (std::size_t i = 0; i < cs.size(); ++i)
     for (const char* what : {"rms_db", "step", "weight_norm"})
-      out += "," + csv_field(cs[i].title + " " + what);
+      out.append(",").append(csv_field(cs[i].title + " " + what));
   out += "\n";
   std::vector<std::vector<double>> rms;
   for (const auto& c : cs) rms.push_back(moving_rms(c.trace->true_error, std::lround(x.loop.sample_rate_hz)));
   for (long n = decimate - 1; n < x.loop.samples(); n += decimate) {
     out += figure_number(double(n) / x.loop.sample_rate_hz);
     for (std::size_t i = 0; i < cs.size(); ++i) {
-      out += "," + figure_number(20.0 * std::log10(at(rms[i], n) / reference_rms));
-      out += "," + figure_number(at(cs[i].trace->step, n)) + "," + figure_number(at(cs[i].trace->weight_norm, n));
+      out.append(",").append(figure_number(20.0 * std::log10(at(rms[i], n) / reference_rms)));
+      out.append(",").append(figure_number(at(cs[i].trace->step, n)));
+      out.append(",").append(figure_number(at(cs[i].trace->weight_norm, n)));
     }
     out += "\n";
   }
@@ -67,13 +68,13 @@ std::string spectrum_csv(const std::vector<Curve>& cs, const ControlExperiment& 
     spectra.push_back(welch_spectrum(tail, 1.0 / x.loop.sample_rate_hz, 2048));
   }
   std::string out = "frequency_hz";
-  for (const auto& c : cs) out += "," + csv_field(c.title + " power_db");
+  for (const auto& c : cs) out.append(",").append(csv_field(c.title + " power_db"));
   out += "\n";
   // The uncontrolled run never stops early, so its grid is the full one.
   for (std::size_t k = 0; k < spectra[0].frequency.size(); ++k) {
     out += figure_number(spectra[0].frequency[k]);
     for (const auto& s : spectra)
-      out += "," + figure_number(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN);
+      out.append(",").append(figure_number(k < s.power.size() ? 10.0 * std::log10(s.power[k]) : NAN));
     out += "\n";
   }
   return out;
@@ -96,7 +97,7 @@ std::string plot_lines(const std::vector<Curve>& cs, const std::string& file, in
 fs::path script(const fs::path& dir, const std::string& name, const std::string& shows,
                 const std::string& reads, const std::string& settings, const std::string& plot) {
   const std::string text = gnuplot::header(name, shows, reads) +
-                           "set datafile separator \",\"\nset key outside right top\nset grid\n" +
+                           "set datafile separator \",\"\n" + gnuplot::key_above_plot() + "set grid\n" +
                            settings + gnuplot::render_all_terminals(name, plot);
   return gnuplot::write_script(dir, name, text);
 }

@@ -6,6 +6,7 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
 #include "framework/report/cell_table.hpp"
+#include "framework/report/results_readme.hpp"
 #include "framework/report/table_format.hpp"
 
 namespace hystbench {
@@ -21,11 +22,11 @@ struct Column {
 };
 
 const Column kColumns[] = {
-    {"RMSE", "RMSE", &SuppressionMetrics::rmse, false},
-    {"MAE", "MAE", &SuppressionMetrics::mae, false},
+    {"RMSE (s.u.)", "RMSE (s.u.)", &SuppressionMetrics::rmse, false},
+    {"MAE (s.u.)", "MAE (s.u.)", &SuppressionMetrics::mae, false},
     {"η (%)", "$\\eta$ (\\%)", &SuppressionMetrics::efficiency_percent, false},
-    {"RMSE*", "RMSE$^*$", &SuppressionMetrics::rmse, true},
-    {"MAE*", "MAE$^*$", &SuppressionMetrics::mae, true},
+    {"RMSE* (s.u.)", "RMSE$^*$ (s.u.)", &SuppressionMetrics::rmse, true},
+    {"MAE* (s.u.)", "MAE$^*$ (s.u.)", &SuppressionMetrics::mae, true},
     {"η* (%)", "$\\eta^*$ (\\%)", &SuppressionMetrics::efficiency_percent, true},
     {"Atten.* (dB)", "Atten.$^*$ (dB)", &SuppressionMetrics::attenuation_db, true},
     {"Conv.* (s)", "Conv.$^*$ (s)", &SuppressionMetrics::convergence_s, true},
@@ -55,20 +56,29 @@ std::string diverged_cell(const ControllerResult& r) {
          ", first at " + time_text(r.earliest_divergence_s);
 }
 
+// Short, for a paper; control_method() says how each column is computed.
 std::string caption(const ControlExperiment& x, bool sweep, bool any_reconstructed, Format f) {
   const bool md = f == Format::Markdown;
   std::string text = (sweep ? "Fixed-step sweep of " : "Vibration control, ") +
-                     (md ? "`" + x.name + "`" : "\\texttt{" + table::escape_latex(x.name) + "}") +
-                     ": " + std::to_string(x.trials) + " noise seeds (seed " +
-                     std::to_string(x.seed) + "), " + number_text(x.loop.duration_s) + " s at " +
-                     number_text(x.loop.sample_rate_hz) +
-                     " Hz; mean and standard deviation over the runs that did not diverge. "
-                     "Efficiency and attenuation compare the RMS of the last " +
-                     number_text(x.windows.steady_s) +
-                     " s with the uncontrolled run of the same noise; convergence is when the 1 s "
-                     "moving RMS stays below -20 dB. Starred columns use the noise-free error.";
+                     (md ? "`" + x.name + "`" : "\\texttt{" + table::escape_latex(x.name) + "}") + ": " +
+                     std::to_string(x.trials) + " noise seeds, " + number_text(x.loop.duration_s) + " s at " +
+                     number_text(x.loop.sample_rate_hz) + " Hz; mean " + (md ? "±" : "$\\pm$") +
+                     " sd over the runs that did not diverge. s.u.: sensor units (disturbance amplitude 1). "
+                     "Starred: noise-free error.";
   if (any_reconstructed) text += (md ? " †: reconstructed rule." : " $\\dagger$: reconstructed rule.");
   return text;
+}
+
+std::string control_method(const ControlExperiment& x) {
+  return "Each controller runs " + std::to_string(x.trials) + " times, each with its own sensor noise "
+         "(experiment seed " + std::to_string(x.seed) + "); a cell is the mean and standard deviation over the runs that did not "
+         "diverge. RMSE and MAE are in sensor units, in which the disturbance alone has amplitude 1 (RMS "
+         "0.707) at the sensor. Efficiency η and attenuation compare the RMS of the last " +
+         number_text(x.windows.steady_s) + " s with the uncontrolled run of the same noise; convergence "
+         "is the time after which the 1 s moving RMS stays below -20 dB. Starred columns use the "
+         "noise-free (true) error, the others the measured one. Ŝ phase err. is the phase error of the "
+         "secondary-path estimate at the disturbance frequency. A rule marked † is our reconstruction "
+         "(docs/control.md).";
 }
 
 // The uncontrolled reference first in the main table, then the controllers.
@@ -109,17 +119,18 @@ std::string csv(const ControlResults& res, bool sweep) {
   std::string out = "label,controller";
   for (const char* kind : {"measured", "true"})
     for (const auto& m : kSuppressionMetrics)
-      for (const char* stat : {"mean", "sd"}) out += std::string(",") + kind + "_" + m.name + "_" + stat;
+      for (const char* stat : {"mean", "sd"})
+        out.append(",").append(kind).append("_").append(m.name).append("_").append(stat);
   out += ",estimate_phase_error_deg,diverged_trials,trials,earliest_divergence_s\n";
   for (const ControllerResult* row : rows(res, sweep)) {
     const ControllerResult& r = *row;
     out += csv_field(r.entry.label) + "," + csv_field(r.entry.name);
     for (const MetricSummary* s : {&r.measured, &r.truth})
       for (const auto& m : kSuppressionMetrics)
-        out += "," + csv_number(s->mean.*m.field) + "," + csv_number(s->sd.*m.field);
-    out += "," + (r.estimate ? csv_number(r.estimate->error.phase_deg) : "");
-    out += "," + std::to_string(r.diverged_trials) + "," + std::to_string(r.trials.size()) + "," +
-           csv_number(r.earliest_divergence_s) + "\n";
+        out.append(",").append(csv_number(s->mean.*m.field)).append(",").append(csv_number(s->sd.*m.field));
+    out.append(",").append(r.estimate ? csv_number(r.estimate->error.phase_deg) : "");
+    out.append(",").append(std::to_string(r.diverged_trials)).append(",").append(std::to_string(r.trials.size()));
+    out.append(",").append(csv_number(r.earliest_divergence_s)).append("\n");
   }
   return out;
 }
@@ -138,6 +149,12 @@ std::vector<std::filesystem::path> write_control_tables(const std::filesystem::p
     write_file_atomic(dir / (stem + ".csv"), csv(res, sweep));
     for (const char* ext : {".md", ".tex", ".csv"}) written.push_back(dir / (stem + ext));
   }
+  std::vector<TableMethod> methods{{"table", control_method(x)}};
+  if (!x.sweep_param.empty()) methods.push_back({"step_sweep", "The same columns for each fixed value of " +
+                                                                   x.sweep_param + ". " + control_method(x)});
+  write_results_readme(dir, "Made by `hystbench control` from the experiment `" + x.name +
+                                "` (in `control.json` with every run's numbers).", methods);
+  written.push_back(dir / "README.md");
   return written;
 }
 

@@ -10,7 +10,7 @@
 // with the sign of physical superposition e = d + S u. The variants differ
 // only in how mu is chosen at each sample: a plugin derives from
 // FxlmsController and supplies next_step().
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 #include "framework/control/controller.hpp"

@@ -1,6 +1,6 @@
 #include "framework/control/secondary_path.hpp"
 
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 
 #include "framework/control/actuator_model.hpp"

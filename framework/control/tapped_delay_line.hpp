@@ -3,7 +3,7 @@
 // vector: each sample is kept twice (at i and i + taps) in a ring, so a push
 // costs O(1) and recent() needs no copy. FIR filters and the FxLMS
 // reference histories read it.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 namespace hystbench {
 

@@ -5,7 +5,7 @@
 // best-so-far trace, maps NaN/Inf fitness to +inf and hands the optimizer its
 // seeded RNG. Plugins never count anything themselves, so every algorithm is
 // measured the same way.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <chrono>
 #include <limits>
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 // A problem is "bounds + batch fitness": everything an optimizer may know.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>

@@ -13,7 +13,7 @@
 //                second), tol = 10⁻³ · max |Δu|
 //   by_time      [{"window", "t_start", "t_end", metrics}]: kTimeWindows windows of
 //                equal sample count (fewer when there are fewer samples)
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

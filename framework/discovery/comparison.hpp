@@ -1,7 +1,7 @@
 #pragma once
 // Comparing a model output with a measurement: the numbers behind
 // `hystbench compare` (metrics.json). comparison_report.hpp writes them out.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>

@@ -233,7 +233,7 @@ fs::path correlation_figure(const fs::path& dir, const Comparison& m,
                  "correlation.dat (index 0: ACF, index 1: CCF; lag value)") +
       "acf_bound = " + gp::number(acf.bound) + "\n" +
       "ccf_bound = " + gp::number(ccf.bound) + "\n" +
-      "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\nset key top right opaque samplen 2\n"
+      "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\n" + gp::key_above_plot() +
       "set ylabel \"Correlation\"\nset xtics 5\nset mxtics 5\n" +
       gp::render_all_terminals("correlation", body, true);
   return gp::write_script(dir, "correlation", script);

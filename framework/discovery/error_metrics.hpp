@@ -12,7 +12,7 @@
 // A number that is undefined for the subset is NaN here and null in JSON:
 // everything but n when n = 0; fit_percent when n < 2 or y is constant;
 // relative_error when y is all zero.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <vector>
 

@@ -5,7 +5,7 @@
 // excitation that makes them differ (a rate-independent loop and a linear
 // lag draw the same ellipse at one frequency), so discovery asks this
 // before it adds or prunes an effect (separability.hpp).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // How slowly the record is driven: the time scale below which a residual
 // counts as slow (creep, drift), taken from the input's zero crossings.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

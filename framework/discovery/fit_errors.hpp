@@ -1,7 +1,7 @@
 #pragma once
 // The two numbers every discovery step is judged by: the RMSE on the samples
 // the fit used and on the held-out samples, in the units of y.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 
 #include "framework/model/model.hpp"

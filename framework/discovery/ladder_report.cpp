@@ -161,7 +161,7 @@ std::string completeness_section(const Ladder& ladder) {
 
 std::string status_sentence(const Ladder& ladder) {
   const std::string from = "Started from `" + ladder.steps.front().model.text() + "`";
-  const std::string model = "`" + ladder.steps.back().model.text() + "`";
+  const std::string model = std::string("`").append(ladder.steps.back().model.text()).append("`");
   if (!ladder.finished()) return from + "; the ladder is still running, now at " + model + ".";
   return from + ", ended with " + model +
          (ladder.stopped_by_limit ? " (stopped at the step limit, the last verdict still named an effect)"

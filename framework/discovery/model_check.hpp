@@ -5,7 +5,7 @@
 // nothing within noise (every parameter within two standard errors of its
 // neutral value: the effect could be removed without changing the fit
 // measurably), and the pair of parameters that trade against each other most.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

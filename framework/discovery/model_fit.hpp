@@ -5,7 +5,7 @@
 //
 // Every evaluation goes through an EvaluationContext, so budgets and seeds
 // work as in benchmark trials; the held-out samples never enter a fitness.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>

@@ -14,7 +14,7 @@ SyntheticData make_model_synthetic_data(const Model& model, const nlohmann::json
   const SignalScales unit_scales;  // physical units throughout
   const Eigen::VectorXd x = model.from_physical(physical, unit_scales, where);
   const Excitation ex = make_excitation(excitation_spec);
-  Measurement m{ex.t, ex.u, ex.u, ex.segment, 1.0 / ex.sample_rate, ""};
+  Measurement m{ex.t, ex.u, ex.u, ex.segment, 1.0 / ex.sample_rate, "", "", ""};
   Eigen::VectorXd clean;
   if (!model.simulate(x, ModelData(m, unit_scales), clean))
     throw InputError(where + ": model " + model.text() + " diverges on this excitation");

@@ -27,7 +27,7 @@
 //                    C(2m,m)σ²; σ_m = 1.4826·median|d| / √C(2m,m) (robust to the
 //                    bursts at steps), and σ = min over m = 2..6.
 //  "none"            fewer than 8 samples: σ is NaN.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #include "framework/discovery/parameter_uncertainty.hpp"
 
-#include <Eigen/Dense>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <limits>
 

@@ -9,7 +9,7 @@
 // eigenvector of JᵀJ) gets an infinite standard error, and a pair whose
 // correlation is close to ±1 trade against each other (a delay against an
 // ARX block's own lag): the fit can drift along that pair.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <utility>
 
 #include "framework/model/model.hpp"

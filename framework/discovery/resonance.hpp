@@ -5,7 +5,7 @@
 // describe one mode twice: a "second mode" fitted onto the first mode's
 // resonance takes over that effect's role instead of adding a mode. Found
 // for any effect of the dynamics stage, a user's own included.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

@@ -9,7 +9,7 @@
 // squared error, the fit is decided by the transient, not by the physics
 // of the rest; the cure is a warm-up (--warmup), not another effect, and
 // discovery prunes none of the start model's effects on that evidence.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 

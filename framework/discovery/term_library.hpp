@@ -26,7 +26,7 @@
 //   - the square root √|a| of each block's own signal, both parities
 //     (sign(a)·√|a| and √|a|): the outflow of a tank through an orifice
 //     (Torricelli), and any law that grows slower than linear. Degree 1.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

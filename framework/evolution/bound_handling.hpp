@@ -1,7 +1,7 @@
 #pragma once
 // Repair of components that left the box (docs/algorithms.md#bound-handling). Shared by
 // every population method so that "midpoint" means the same everywhere.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

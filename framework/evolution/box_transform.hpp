@@ -8,7 +8,7 @@
 // most of [l, u], quadratic within a margin of each bound and periodic
 // (mirrored) outside, so every real number lands inside the box and the map
 // is smooth everywhere.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 namespace hystbench {
 

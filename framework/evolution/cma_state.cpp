@@ -1,6 +1,6 @@
 #include "framework/evolution/cma_state.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // sampling and update, and the stopping tests that end a run or trigger an
 // IPOP restart. The state knows nothing of bounds or budgets; the caller
 // maps the sampled points into the box and evaluates them.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <deque>
 
 #include "framework/core/rng.hpp"

@@ -3,7 +3,7 @@
 // mutation (docs/algorithms.md#shade-family):
 //   v = x_i + F_pbest (x_pbest - x_i) + F (x_r1 - x~_r2)
 // L-SHADE uses F_pbest = F; jSO weights F_pbest by stage.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/core/rng.hpp"
 #include "framework/evolution/de_operators.hpp"

@@ -5,7 +5,7 @@
 // from the same population (docs/algorithms.md#synchronous-generations),
 // evaluated in one call, and greedy one-to-one selection with the "<=" tie
 // rule (docs/algorithms.md#selection).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <functional>
 #include <vector>
 

@@ -2,7 +2,7 @@
 // Differential-evolution mutation and crossover, shared by every DE-family
 // plugin (docs/algorithms.md#mutation-strategies,
 // docs/algorithms.md#binomial-crossover).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

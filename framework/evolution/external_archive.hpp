@@ -1,7 +1,7 @@
 #pragma once
 // JADE/SHADE external archive: parents beaten by their trials, kept as extra
 // donors for the second difference vector (docs/algorithms.md#external-archive).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 #include "framework/core/rng.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // One-to-one greedy replacement with the "<=" tie rule (docs/algorithms.md#selection):
 // candidate i replaces member i when it is not worse.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 namespace hystbench {
 

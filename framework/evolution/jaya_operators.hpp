@@ -1,7 +1,7 @@
 #pragma once
 // The Jaya move (docs/algorithms.md#jaya, Rao 2016), shared by Jaya and the
 // Jaya+DE hybrid.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/core/problem.hpp"
 #include "framework/core/rng.hpp"

@@ -5,7 +5,7 @@
 // depend on the scale of the coordinates (Jaya's |x| term, PSO velocity
 // limits) search in z so that every parameter counts alike whatever its
 // physical range.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/core/evaluation_context.hpp"
 #include "framework/core/problem.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Building blocks of population methods: initial sampling, index draws,
 // ranking.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 #include "framework/core/problem.hpp"

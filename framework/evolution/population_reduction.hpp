@@ -3,7 +3,7 @@
 // docs/algorithms.md#population-size-reduction):
 // the population shrinks from N_init to N_min as the budget is used, by
 // dropping its worst members.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 namespace hystbench {
 

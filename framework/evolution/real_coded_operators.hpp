@@ -4,7 +4,7 @@
 // the NSGA-II formulation, and the switchable alternatives
 // (docs/algorithms.md#alternative-operators). Every
 // child they return lies inside the box.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <utility>
 #include <vector>

@@ -173,7 +173,7 @@ std::string unique_name(const Group& g, const std::string& label,
                         std::set<std::pair<int, std::string>>& taken) {
   std::string name = label;
   for (int n = 1; !taken.emplace(g.function.id, ioh_safe_name(name)).second; ++n)
-    name = label + "@" + g.merged.experiment.name + (n > 1 ? "-" + std::to_string(n) : "");
+    name = label + "@" + g.merged.experiment.name + (n > 1 ? std::string("-").append(std::to_string(n)) : "");
   return name;
 }
 

@@ -91,7 +91,7 @@ AlgorithmSpec read_algorithm(const nlohmann::json& a, std::size_t index) {
 
 Experiment Experiment::from_json(const nlohmann::json& j, const std::string& where) {
   try {
-    require_known_keys(j, {"name", "description", "problem", "budget", "trials", "seed", "algorithms"},
+    require_known_keys(j, {"name", "description", "problem", "budget", "trials", "seed", "algorithms", "table_layout"},
                        "top level");
     Experiment e;
     const auto& name = required(j, "name");
@@ -99,6 +99,10 @@ Experiment Experiment::from_json(const nlohmann::json& j, const std::string& whe
       throw InputError("name: expected a non-empty string");
     e.name = name.get<std::string>();
     e.description = text_or(j, "description", "", "description");
+    e.table_layout = text_or(j, "table_layout", "default", "table_layout");
+    if (e.table_layout != "default" && e.table_layout != "seed")
+      throw InputError("table_layout = \"" + e.table_layout + "\": give \"default\" (one column per statistic) or "
+                       "\"seed\" (MEDE's Table 1, with Best beside f_min)");
     e.problem = required(j, "problem");
     problem_options(e.problem);  // its keys and their types, before anything runs
     e.budget = Budget::from_json(required(j, "budget"), "budget");
@@ -158,6 +162,7 @@ nlohmann::json Experiment::to_json() const {
   nlohmann::json j = {{"name", name},       {"problem", problem}, {"budget", budget.to_json()},
                       {"trials", trials},   {"seed", seed},       {"algorithms", algs}};
   if (!description.empty()) j["description"] = description;
+  if (table_layout != "default") j["table_layout"] = table_layout;
   return j;
 }
 

@@ -43,6 +43,9 @@ struct AlgorithmSpec {
 struct Experiment {
   std::string name;
   std::string description;
+  // "default", or "seed": the results table with the columns of MEDE's
+  // Table 1, Best beside f_min although they coincide (framework/report/tables.hpp).
+  std::string table_layout = "default";
   nlohmann::json problem;  // the "problem" object, checked against its registry entry
   Budget budget;
   long trials = 0;

@@ -87,7 +87,7 @@ void add_multisine(SignalBuilder& ex, const SegmentReader& s) {
   const double a = s.number("amplitude") / double(f.size()), off = s.number("offset", 0.0);
   const double phase = s.number("phase_deg", 0.0) * std::numbers::pi / 180.0;
   std::string name;
-  for (double fi : f) name += (name.empty() ? "" : "/") + hz(fi);
+  for (double fi : f) name.append(name.empty() ? "" : "/").append(hz(fi));
   const std::string label = s.label("multisine_" + name + "Hz");
   const long n = samples(s.positive("duration"), ex.sample_rate);
   for (long k = 0; k < n; ++k) {

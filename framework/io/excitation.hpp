@@ -14,7 +14,7 @@
 // "label" is optional (default e.g. "sine_5Hz", "sweep_1-50Hz",
 // "multisine_10/30/50Hz", "steps"). A multisine is the mean of its sines
 // times `amplitude`, so it never leaves offset ± amplitude.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

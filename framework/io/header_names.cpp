@@ -56,7 +56,7 @@ std::span<const std::string_view> names_of(ColumnRole role) {
 
 HeaderName split_unit(std::string_view name) {
   name = trim(name);
-  for (const auto [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
+  for (const auto& [open, close] : {std::pair{'[', ']'}, std::pair{'(', ')'}}) {
     const auto at = name.rfind(open);
     if (!name.empty() && name.back() == close && at != std::string_view::npos && at > 0) {
       const auto unit = trim(name.substr(at + 1, name.size() - at - 2));

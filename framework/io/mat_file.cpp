@@ -238,7 +238,7 @@ matvar_t* walk(matvar_t* top, const std::vector<Step>& steps, const std::string&
       } else {
         fail("is not a struct or cell array; (k) picks an element of those only");
       }
-      at += "(" + std::to_string(step.element) + ")";
+      at.append("(").append(std::to_string(step.element)).append(")");
       continue;
     }
     if (v->class_type != MAT_C_STRUCT) fail("is not a struct; it has no field '" + step.name + "'");

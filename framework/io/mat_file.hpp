@@ -3,7 +3,7 @@
 // Reading finds a numeric vector by a path into the file's variables
 // ("u", "rec.Y(2).Data"), as measurements recorded by MATLAB, Simulink or
 // dSPACE ControlDesk hold them; writing stores named column vectors.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <filesystem>
 #include <memory>
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 // Measurement records: time t, input u, output y, optional segment label.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

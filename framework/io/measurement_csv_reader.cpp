@@ -86,7 +86,7 @@ double parse_number(std::string_view field, const Location& at, const std::strin
   if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
   double value = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  const std::string quoted = "'" + std::string(field) + "'";
+  const std::string quoted = std::string("'").append(field).append("'");
   if (ec == std::errc::result_out_of_range)
     fail(at, column, quoted + " is out of the range of a double; rescale the column (other units)");
   if (ec != std::errc{} || end != digits.data() + digits.size()) {

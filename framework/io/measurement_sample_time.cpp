@@ -2,7 +2,7 @@
 // and checked against every step, so that a missing row cannot pass.
 #include "framework/io/measurement_csv_rows.hpp"
 
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <charconv>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Contiguous stretches of equal segment labels. A label that comes back
 // later starts a new run, so a run is always one unbroken excitation.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

@@ -2,7 +2,7 @@
 // Synthetic measurements: a model's response to an excitation plus seeded
 // Gaussian noise, with the "truth" record that makes the noise floor known.
 // Each kind of model (the seed model, a discovery model) fills one.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cstdint>
 #include <nlohmann/json.hpp>
 

@@ -14,7 +14,7 @@
 // candidate are then taken from the problem. The Jacobian is a forward
 // difference in the box-normalised coordinates z = (x - lower) / range,
 // one evaluation per parameter; candidates are clamped into the box.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 
 #include "framework/core/evaluation_context.hpp"

@@ -7,7 +7,7 @@
 // budget as for every other optimizer. NLopt's random generator is seeded
 // from the trial's RNG in the calling thread before every run, so NLopt's
 // stochastic algorithms reproduce.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

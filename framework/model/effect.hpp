@@ -21,7 +21,7 @@
 // Effects work in normalised units: the framework divides u and y by their
 // RMS before fitting, so bounds are O(1) whatever the physical units, and
 // converts parameters back for reports (EffectParam::y_power / u_power).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <functional>
 #include <memory>
 #include <span>

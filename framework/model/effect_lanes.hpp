@@ -8,7 +8,7 @@
 // signal[k][l]. An effect's batched form runs the same operations as its
 // scalar form on every lane (same order, no fused multiply-add: the build
 // uses -ffp-contract=off), so each lane's output equals apply()'s bit for bit.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <array>
 #include <bit>
 #include <cmath>

@@ -6,7 +6,7 @@
 // polynomials, and about two orders of magnitude closer to a band-limited
 // input than linear interpolation (holding the input constant over a sample
 // is worse still). Positions are in samples: sample k sits at position k.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 namespace hystbench {
 

@@ -16,7 +16,7 @@
 //   - then adds the remaining samples one at a time.
 // Records shorter than one packet, and builds without vectorisation, are
 // summed one sample at a time from the first.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <array>
 #include <span>
 #include <utility>

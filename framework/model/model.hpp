@@ -1,7 +1,7 @@
 #pragma once
 // A discovery model: a static gain and an ordered list of effects, with one
 // flat parameter vector "gain", "<effect>.<param>", ... in normalised units.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // A measurement prepared for model fitting: signals divided by fixed scales
 // (so every effect's bounds are O(1)), time from 0, and which samples the
 // fit may see.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

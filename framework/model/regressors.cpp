@@ -1,6 +1,6 @@
 #include "framework/model/regressors.hpp"
 
-#include <Eigen/QR>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

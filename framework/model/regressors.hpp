@@ -3,7 +3,7 @@
 // (residual_signature.hpp) correlates the residual e = y − ŷ with the shape
 // the effect would leave in it, built from these pieces. The breakdown
 // tables of `compare` use the same branches and amplitude bins.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 namespace hystbench {

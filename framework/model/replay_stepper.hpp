@@ -6,7 +6,7 @@
 // output at k depends on samples up to k only). The price is O(k) work and
 // memory at sample k: effects meant for long streams write a stepper of
 // their own.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <memory>
 #include <span>
 #include <vector>

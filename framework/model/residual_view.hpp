@@ -3,7 +3,7 @@
 // the record, the model output and the residual e = y − ŷ, in physical units,
 // with the residual tests that several statistics share already computed.
 // Nothing is copied; the view lives as long as the comparison that made it.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

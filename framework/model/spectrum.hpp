@@ -4,7 +4,7 @@
 // half overlapping, with their mean removed; the periodograms averaged.
 // Averaging K segments gives every bin a χ²(2K)/2K spread, so a white
 // signal's spectrum is flat to within a few 1/√K and narrow peaks stand out.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 namespace hystbench {

@@ -6,7 +6,7 @@
 // Model::simulate gives on that record under the same input hold (to
 // rounding: the catalog effects share their per-sample code between the two
 // forms). Works in normalised units, like simulate().
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <array>
 #include <memory>
 #include <string>

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/gnuplot_script.hpp"
 
@@ -100,27 +101,34 @@ std::string convergence_plot(const std::vector<const ConvergenceCurve*>& curves,
   return plot;
 }
 
-// Upper end of the fitness axis: the highest median once 1 % of the budget
-// is spent. The first few candidates of a model that can diverge may have
-// astronomically large (finite) fitness; drawn in full they flatten every
-// curve against the axis. 0: leave the range to gnuplot.
-double fitness_axis_top(const std::vector<const ConvergenceCurve*>& curves) {
+// Upper end of the fitness axis, so that the whole trace shows: above the
+// highest median. Only when the first candidates of a model that can
+// diverge reach astronomically large (finite) fitness, more than kDecades
+// above the highest median once 1 % of the budget is spent, would that
+// flatten every curve against the axis; then the axis stops at 3x that
+// median and a label says how high the traces start.
+struct FitnessAxisTop {
+  double top = 0.0;      // 0: leave the range to gnuplot
+  double highest = 0.0;  // the highest median, drawn or not
+  bool clipped() const { return top > 0 && highest > top; }
+};
+
+FitnessAxisTop fitness_axis_top(const std::vector<const ConvergenceCurve*>& curves) {
+  constexpr double kDecades = 4;
   long last = 0;
   for (const auto* c : curves)
     if (!c->evaluations.empty()) last = std::max(last, c->evaluations.back());
-  double top = 0.0;
+  double highest = 0.0, after_start = 0.0;
   for (const auto* c : curves)
-    for (std::size_t i = 0; i < c->evaluations.size(); ++i)
-      if (c->evaluations[i] * 100 >= last && std::isfinite(c->median[i]))
-        top = std::max(top, c->median[i]);
-  return top;
-}
-
-// Many algorithms: the key goes beside the plot, where it covers nothing.
-std::string key_placement(std::size_t curves) {
-  if (curves > 6) return "set key outside right top opaque spacing 1.1 samplen 2.5\n";
-  return "# Curves fall from the upper left, so the lower left stays free.\n"
-         "set key bottom left opaque box spacing 1.2 samplen 2.5\n";
+    for (std::size_t i = 0; i < c->evaluations.size(); ++i) {
+      if (std::isfinite(c->q75[i])) highest = std::max(highest, c->q75[i]);
+      if (!std::isfinite(c->median[i])) continue;
+      highest = std::max(highest, c->median[i]);
+      if (c->evaluations[i] * 100 >= last) after_start = std::max(after_start, c->median[i]);
+    }
+  if (highest <= 0) return {};
+  if (after_start > 0 && highest > after_start * std::pow(10.0, kDecades)) return {3 * after_start, highest};
+  return {1.5 * highest, highest};
 }
 
 std::string convergence_settings(const std::vector<const ConvergenceCurve*>& curves,
@@ -138,10 +146,16 @@ std::string convergence_settings(const std::vector<const ConvergenceCurve*>& cur
   if (spans_a_decade(curves, drawable_floor(ctx))) s += "set format y \"10^{%L}\"\n";
   if (drawable_floor(ctx) > 0)
     s += "noise_floor = " + gnuplot::number(drawable_floor(ctx)) + "  # SSE of the true parameters\n";
-  if (const double top = fitness_axis_top(curves); top > 0)
-    s += "# Fitness axis from the data to 3x the highest median after 1 % of the budget.\n"
-         "set yrange [*:" + gnuplot::number(3 * top) + "]\n";
-  return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" + key_placement(curves.size()) +
+  if (const FitnessAxisTop axis = fitness_axis_top(curves); axis.clipped())
+    s += "# The first evaluations reach " + gnuplot::number(axis.highest) +
+         ": the axis stops at 3x the highest median after 1 % of the budget.\n"
+         "set yrange [*:" + gnuplot::number(axis.top) + "]\n"
+         "set label 1 " + gnuplot::quoted("traces start above the axis, up to " + format_number("%.3g", axis.highest)) +
+         " at graph 0.02, graph 0.96 left front noenhanced\n";
+  else if (axis.top > 0)
+    s += "# The whole trace: the axis ends above the highest upper quartile.\n"
+         "set yrange [*:" + gnuplot::number(axis.top) + "]\n";
+  return s + "set grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" + gnuplot::key_above_plot() +
          "set style fill transparent solid 0.25 noborder\n";
 }
 

@@ -34,6 +34,10 @@ constexpr const char* kModelStyle = "lw 1 lc rgb \"#0072B2\"";
 constexpr const char* kResidualColour = "#D55E00";
 // More loop panels than this no longer fit a page legibly.
 constexpr std::size_t kMaxLoopPanels = 9;
+// A time plot of more samples than twice this draws, per bin of samples, the
+// range each curve spans (min to max): a fast segment of a long record is
+// then its envelope, not a block of ink, and a slow one still a line.
+constexpr Eigen::Index kTimeBins = 1500;
 
 std::string file_label(const std::string& label) {
   std::string out;
@@ -91,28 +95,64 @@ std::string loops_data(const std::vector<SegmentRuns>& segs, const Eigen::Vector
 struct TimeFigure {
   std::string csv, title, markers;
   std::string output_tics, residual_tics;
+  bool envelope = false;  // csv holds the binned ranges (envelope_data)
 };
+
+// One row per bin of samples: t of the bin's middle, then min and max of the
+// measurement, the model and the residual.
+std::string envelope_data(const Eigen::VectorXd& t, const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
+  std::string out = "# t y_min y_max model_min model_max residual_min residual_max\n";
+  const Eigen::Index n = t.size();
+  for (Eigen::Index b = 0; b < kTimeBins; ++b) {
+    const Eigen::Index begin = b * n / kTimeBins, end = (b + 1) * n / kTimeBins, len = end - begin;
+    const Eigen::VectorXd r = y.segment(begin, len) - yhat.segment(begin, len);
+    out.append(gnuplot::number(t[(begin + end - 1) / 2]));
+    for (const Eigen::VectorXd& v : {Eigen::VectorXd(y.segment(begin, len)), Eigen::VectorXd(yhat.segment(begin, len)), r})
+      out.append(" ").append(gnuplot::number(v.minCoeff())).append(" ").append(gnuplot::number(v.maxCoeff()));
+    out.append("\n");
+  }
+  return out;
+}
+
+// The plot commands of the two panels: lines of the samples, or the edges
+// of each curve's envelope with the measured one and the residual filled.
+std::pair<std::string, std::string> time_plots(const TimeFigure& f) {
+  const std::string model = std::string(" with lines ") + kModelStyle;
+  const std::string measured = std::string(" with lines ") + kMeasuredStyle;
+  const std::string residual = std::string(" with lines lw 1 lc rgb \"") + kResidualColour + "\"";
+  if (!f.envelope) {
+    const std::string data = gnuplot::quoted(f.csv) + " skip 1 using 1:";
+    return {"  plot " + data + "3" + measured + " title \"measured\", \\\n       " + data + "4" + model +
+                " title \"model\"\n",
+            "  plot " + data + "5" + residual + " notitle\n"};
+  }
+  const std::string data = gnuplot::quoted(f.csv) + " using 1:";
+  return {"  plot " + data + "2:3 with filledcurves fc rgb \"#b4b4b4\" notitle, \\\n       " + data + "2" +
+              measured + " title \"measured (range per bin)\", \\\n       " + data + "3" + measured +
+              " notitle, \\\n       " + data + "4" + model + " title \"model\", \\\n       " + data + "5" +
+              model + " notitle\n",
+          "  plot " + data + "6:7 with filledcurves fc rgb \"" + kResidualColour + "\" notitle, \\\n       " +
+              data + "6" + residual + " notitle, \\\n       " + data + "7" + residual + " notitle\n"};
+}
 
 // Two panels sharing the time axis; margins in character units keep the
 // axes aligned and the labels inside the page at every font size.
 std::string time_body(const TimeFigure& f) {
-  const std::string data = gnuplot::quoted(f.csv) + " skip 1 using 1:";
-  return "  set datafile separator comma\n  set multiplot\n"
+  const auto [top, bottom] = time_plots(f);
+  return std::string(f.envelope ? "  set datafile separator whitespace\n" : "  set datafile separator comma\n") +
+         "  set multiplot\n"
          "  set yrange [*:*]\n  set autoscale fix\n  set lmargin 10\n  set rmargin 2\n"
          "  set origin 0, 0.38\n  set size 1, 0.62\n  set tmargin 4\n  set bmargin 0.5\n"
          "  set title " + f.title + " noenhanced offset 0, 1.2\n" + f.markers +
          "  set format x \"\"\n  unset xlabel\n  set ylabel output_label\n" +
          f.output_tics +
-         "  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n"
-         "  plot " + data + "3 with lines " + kMeasuredStyle + " title \"measured\", \\\n       " +
-         data + "4 with lines " + kModelStyle + " title \"model\"\n"
+         "  set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n" +
+         top +
          "  unset label\n  unset title\n  unset key\n"
          "  set origin 0, 0\n  set size 1, 0.38\n  set tmargin 0.5\n  set bmargin 3.2\n"
          "  set format x \"% h\"\n  set xlabel \"Time t [s]\"\n"
          "  set ylabel residual_label\n" +
-         f.residual_tics +
-         "  plot " + data + "5 with lines lw 1 lc rgb \"" + kResidualColour +
-         "\" notitle\n  unset multiplot\n  unset arrow\n";
+         f.residual_tics + bottom + "  unset multiplot\n  unset arrow\n";
 }
 
 TimeFigure time_figure(const std::string& stem, const std::string& who, const Eigen::VectorXd& t,
@@ -124,8 +164,9 @@ TimeFigure time_figure(const std::string& stem, const std::string& who, const Ei
     output.add(yhat[i]);
     residual.add(y[i] - yhat[i]);
   }
-  return {stem + ".csv", gnuplot::quoted("Best fit of " + who),
-          segment_markers(segments, t), ytics(output, 4), residual_axis(residual)};
+  const bool envelope = t.size() > 2 * kTimeBins;
+  return {envelope ? stem + "_time.dat" : stem + ".csv", gnuplot::quoted("Best fit of " + who),
+          segment_markers(segments, t), ytics(output, 4), residual_axis(residual), envelope};
 }
 
 std::string number_array(const char* name, const std::vector<double>& v) {
@@ -200,11 +241,15 @@ fs::path time_script(const fs::path& dir, const std::string& stem, const std::st
                      const Eigen::VectorXd& t, const Eigen::VectorXd& y,
                      const Eigen::VectorXd& yhat, const std::vector<std::string>& segments) {
   const std::string name = stem + "_time";
+  const TimeFigure f = time_figure(stem, who, t, y, yhat, segments);
+  if (f.envelope) write_file_atomic(dir / f.csv, envelope_data(t, y, yhat));
   return gnuplot::write_script(
       dir, name,
       gnuplot::header(name, "measured and model output over time (top), residual (bottom)",
-                    stem + ".csv (t,u,y_measured,y_model,residual[,segment])") +
-          axes + gnuplot::render_all_terminals(name, time_body(time_figure(stem, who, t, y, yhat, segments))));
+                      f.envelope ? f.csv + " (" + std::to_string(kTimeBins) +
+                                       " bins of samples: t, then min and max of y, model, residual)"
+                                 : stem + ".csv (t,u,y_measured,y_model,residual[,segment])") +
+          axes + gnuplot::render_all_terminals(name, time_body(f)));
 }
 
 fs::path loops_script(const fs::path& dir, const std::string& stem, const std::string& who,

@@ -3,7 +3,7 @@
 // apart from the convergence figure because they are drawn from one fit's
 // time series. Rendered like every figure by render_figures
 // (figure_rendering.hpp).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // The segment markers of the fit_LABEL_time figure, apart from the figure
 // because placing the names so that none overlap is a job of its own.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

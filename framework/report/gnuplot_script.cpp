@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "framework/io/atomic_file.hpp"
+#include "framework/report/figure_style.hpp"
 
 namespace hystbench::gnuplot {
 
@@ -37,22 +38,62 @@ std::string header(const std::string& name, const std::string& shows, const std:
          "end.\n\nset encoding utf8\n";
 }
 
-std::string render_all_terminals(const std::string& name, const std::string& body, bool tall) {
+namespace {
+
+// Terminal lines for the screen: sized for a monitor, scaled by the reader.
+std::string screen_terminals(bool tall) {
   const std::string svg = tall ? "900,760" : "900,560";
   const std::string pdf = tall ? "6in,5in" : "6in,3.75in";
-  return "\ndo for [ext in \"svg png pdf\"] {\n"
-         "  if (ext eq \"svg\") { set terminal svg size " +
-         svg +
-         " font \"Helvetica,12\" "
-         "background rgb \"white\" }\n"
-         "  if (ext eq \"png\") { set terminal pngcairo size " +
-         svg +
-         " font \"Helvetica,11\" }\n"
-         "  if (ext eq \"pdf\") { set terminal pdfcairo size " +
-         pdf +
-         " font \"Helvetica,10\" }\n"
-         "  set output \"" +
-         name + ".\".ext\n" + body + "}\nunset output\n";
+  return "  if (ext eq \"svg\") { set terminal svg size " + svg +
+         " font \"Helvetica,12\" background rgb \"white\" }\n"
+         "  if (ext eq \"png\") { set terminal pngcairo size " + svg + " font \"Helvetica,11\" }\n"
+         "  if (ext eq \"pdf\") { set terminal pdfcairo size " + pdf + " font \"Helvetica,10\" }\n";
+}
+
+// Terminal lines for a journal: printed at 100 %, one column (8.5 cm) or,
+// for stacked panels, two (17.5 cm); 8 pt text; the PNG at 300 dpi.
+std::string paper_terminals(bool tall) {
+  const std::string pdf = tall ? "17.5cm,12cm" : "8.5cm,6cm";
+  const std::string png = tall ? "2067,1417" : "1004,709";  // the PDF's size at 300 dpi
+  const std::string svg = tall ? "496,340" : "241,170";     // in points
+  return "  if (ext eq \"svg\") { set terminal svg size " + svg +
+         " font \"Helvetica,8\" background rgb \"white\" }\n"
+         "  if (ext eq \"png\") { set terminal pngcairo size " + png +
+         " font \"Helvetica,8\" fontscale 4.17 linewidth 4.17 }\n"
+         "  if (ext eq \"pdf\") { set terminal pdfcairo size " + pdf + " font \"Helvetica,8\" }\n";
+}
+
+// The caption carries the title in a paper: every `set title` line of the
+// plot commands becomes `unset title`, and the loop starts untitled.
+std::string without_titles(const std::string& body) {
+  std::string out;
+  std::size_t begin = 0;
+  while (begin < body.size()) {
+    std::size_t end = body.find('\n', begin);
+    if (end == std::string::npos) end = body.size();
+    const std::string line = body.substr(begin, end - begin);
+    const std::size_t text = line.find_first_not_of(' ');
+    if (text != std::string::npos && line.compare(text, 10, "set title ") == 0)
+      out += line.substr(0, text) + "unset title";
+    else
+      out += line;
+    if (end < body.size()) out += '\n';
+    begin = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string render_all_terminals(const std::string& name, const std::string& body, bool tall) {
+  const bool paper = figure_style() == FigureStyle::Paper;
+  return std::string("\ndo for [ext in \"svg png pdf\"] {\n") +
+         (paper ? paper_terminals(tall) + "  unset title\n" : screen_terminals(tall)) +
+         "  set output \"" + name + ".\".ext\n" + (paper ? without_titles(body) : body) + "}\nunset output\n";
+}
+
+std::string key_above_plot() {
+  return "set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1\n";
 }
 
 std::filesystem::path write_script(const std::filesystem::path& dir, const std::string& name,

@@ -25,9 +25,16 @@ std::string header(const std::string& name, const std::string& shows, const std:
 
 // The plot commands `body` wrapped in a loop over the svg, png and pdf
 // terminals, so a restyled script keeps the three images identical.
-// `tall` picks a taller page for figures with stacked panels.
+// `tall` picks a taller page for figures with stacked panels (in the paper
+// style, figure_style.hpp, the double-column width). The paper style also
+// drops the titles.
 std::string render_all_terminals(const std::string& name, const std::string& body,
                                  bool tall = false);
+
+// `set key` above the plot area, centred, entries side by side: the legend
+// of every figure with several curves, outside the data and as wide as the
+// plot rather than a column beside it.
+std::string key_above_plot();
 
 // Writes dir/NAME.gp atomically and returns its path.
 std::filesystem::path write_script(const std::filesystem::path& dir, const std::string& name,

@@ -11,6 +11,7 @@
 #include "framework/report/cell_table.hpp"
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/ranking_figure.hpp"
+#include "framework/report/results_readme.hpp"
 #include "framework/report/table_format.hpp"
 
 namespace hystbench {
@@ -105,12 +106,16 @@ std::string control_sentence(const FriedmanRanking& r, Format f) {
          " significantly worse, = no significant difference. Best average rank in bold.";
 }
 
+// Short, for a paper; the tests and their statistics are in ranking_method().
 std::string caption(const FriedmanRanking& r, Format f) {
-  return "Friedman average ranks (1 = best) of " + std::to_string(r.labels.size()) +
-         " algorithms over " + std::to_string(r.blocks.size()) +
-         " data sets: in each data set the algorithms are ranked by the " + to_string(r.statistic) +
-         " final fitness of their " + trials_text(r) + " (ties share the average rank); " +
-         escape(budget_text(r), f) + "." + statistics_sentence(r, f) + control_sentence(r, f);
+  const bool tex = f == Format::Latex;
+  std::string text = "Friedman average ranks (1 = best) of " + std::to_string(r.labels.size()) +
+                     " algorithms over " + std::to_string(r.blocks.size()) + " data sets, by " +
+                     to_string(r.statistic) + " final fitness; p = " + p_value(r.test.f_p, f) +
+                     " (Iman–Davenport).";
+  if (r.critical_difference) text += " Nemenyi CD = " + format_fitness(*r.critical_difference, f) + ".";
+  return text + " Marks: against " + escape(r.labels[r.control], f) + ", Holm-corrected (+ better, " +
+         (tex ? "$-$" : "−") + " worse). Bold: best.";
 }
 
 std::string data_set_list(const FriedmanRanking& r) {
@@ -175,13 +180,23 @@ nlohmann::json ranking_json(const FriedmanRanking& r) {
           {"control", r.labels[r.control]}};
 }
 
+std::string ranking_method(const FriedmanRanking& r) {
+  const std::string text = "In each data set the algorithms are ranked by the " + to_string(r.statistic) +
+                           " final fitness of their " + trials_text(r) + " (ties share the average rank); " +
+                           budget_text(r) + "." + statistics_sentence(r, Format::Markdown) +
+                           control_sentence(r, Format::Markdown);
+  return text + data_set_list(r);
+}
+
 std::vector<std::filesystem::path> write_ranking(const std::filesystem::path& dir,
                                                  const FriedmanRanking& r) {
   write_file_atomic(dir / "ranks.md", ranking_markdown(r));
   write_file_atomic(dir / "ranks.tex", ranking_latex(r));
   write_file_atomic(dir / "ranks.csv", ranking_csv(r));
   write_file_atomic(dir / "ranks.json", ranking_json(r).dump(2) + "\n");
-  return {dir / "ranks.md", dir / "ranks.tex", dir / "ranks.csv", dir / "ranks.json",
+  write_results_readme(dir, "Made by `hystbench rank` from the results folders listed below.",
+                       {{"ranks", ranking_method(r)}});
+  return {dir / "README.md", dir / "ranks.md", dir / "ranks.tex", dir / "ranks.csv", dir / "ranks.json",
           write_ranking_figure(dir, r)};
 }
 

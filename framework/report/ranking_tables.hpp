@@ -17,6 +17,8 @@
 namespace hystbench {
 
 std::string ranking_markdown(const FriedmanRanking& r);
+// How the ranks and tests were made, in Markdown, for the folder's README.md.
+std::string ranking_method(const FriedmanRanking& r);
 // booktabs tabular in a table float.
 std::string ranking_latex(const FriedmanRanking& r);
 std::string ranking_csv(const FriedmanRanking& r);

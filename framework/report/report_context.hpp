@@ -16,6 +16,7 @@ struct ReportContext {
   std::string input_unit;          // of u, e.g. "V"; empty when unknown
   std::string output_unit;         // of y, e.g. "µm"
   std::string fitness;             // what the fitness is, e.g. "SSE"; empty when unnamed
+  bool seed_table_layout = false;  // the results table as MEDE's Table 1 (Experiment::table_layout)
   // "Best-so-far fitness (SSE)", or without the parentheses when unnamed.
   std::string fitness_axis(const std::string& what) const {
     return what + (fitness.empty() ? "" : " (" + fitness + ")");

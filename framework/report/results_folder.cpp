@@ -1,5 +1,7 @@
 #include "framework/report/results_folder.hpp"
 
+#include "framework/report/results_readme.hpp"
+
 #include <algorithm>
 #include <sstream>
 
@@ -7,6 +9,7 @@
 #include "framework/report/convergence.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/provenance.hpp"
+#include "framework/report/results_readme.hpp"
 #include "framework/report/runtime_figures.hpp"
 #include "framework/report/stats_tables.hpp"
 #include "framework/report/tables.hpp"
@@ -33,7 +36,7 @@ ReportContext report_context(const Experiment& e, const Problem& problem,
                              const std::vector<std::vector<TrialResult>>& results) {
   ReportContext ctx{e.name,  problem.name(),          describe_budget(e.budget),
                     trials_per_algorithm(results), e.seed, noise_floor_of(problem), "", "",
-                    problem.describe().value("fitness", "")};
+                    problem.describe().value("fitness", ""), e.table_layout == "seed"};
   if (const auto* model = dynamic_cast<const SignalModelProblem*>(&problem)) {
     ctx.input_unit = model->input_unit();
     ctx.output_unit = model->output_unit();
@@ -117,6 +120,10 @@ WrittenReport write_report(const std::filesystem::path& dir, const Experiment& e
   write_tables(dir, out.summaries, ctx);
   const auto statistics = campaign_statistics(experiment, results, reference, ctx.noise_floor);
   write_stats_tables(dir, statistics, ctx);
+  write_results_readme(dir,
+                       "Made by `hystbench run` (or `report`) from the experiment `" + experiment.name +
+                           "` in `summary.json`, whose trials are in `trials.jsonl`.",
+                       {{"table", table_method(ctx)}, {"stats", stats_method(statistics)}});
 
   std::vector<ConvergenceCurve> curves;
   for (std::size_t a = 0; a < results.size(); ++a)
@@ -134,7 +141,7 @@ WrittenReport write_report(const std::filesystem::path& dir, const Experiment& e
     out.note += std::string(out.note.empty() ? "" : "\n") +
                 "No runtime ECDF: no target fitness is known (set budget.target, or use data "
                 "whose noise floor is known).";
-  for (const char* f : {"summary.json", "trials.jsonl", "table.md", "table.tex", "table.csv",
+  for (const char* f : {"summary.json", "trials.jsonl", "README.md", "table.md", "table.tex", "table.csv",
                         "stats.md", "stats.tex", "stats.csv", "convergence.csv", "boxplot.csv"})
     out.files.push_back(dir / f);
   if (statistics.target) out.files.push_back(dir / "ecdf.csv");

@@ -83,8 +83,8 @@ std::string ecdf_settings(const ReportContext& ctx, double target) {
          " noenhanced\n"
          "set xlabel \"Function evaluations\"\nset ylabel \"Fraction of trials at the target\"\n"
          "set logscale x\nset format x \"10^{%L}\"\nset autoscale xfix\nset offsets graph 0.05, graph 0.02, 0, 0\n"
-         "set yrange [0:1.02]\nset grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-         "set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1\n";
+         "set yrange [0:1.02]\nset grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" +
+         gnuplot::key_above_plot();
 }
 
 // Every line flat at 0 reads like a broken figure; say why instead.

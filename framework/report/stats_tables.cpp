@@ -177,9 +177,15 @@ std::string runtime_sentence(const CampaignStatistics& s, Format f) {
   return text + " Best printed value per column in bold, ties included.";
 }
 
+// The caption says what the marks and columns are; how they are computed is
+// in stats_method(), for the folder's README.md.
 std::string caption(const CampaignStatistics& s, const ReportContext& ctx, Format f) {
-  return run_sentence(ctx, f) + mark_sentence(s, f) + p_value_sentence(s, f) +
-         runtime_sentence(s, f);
+  const bool tex = f == Format::Latex;
+  std::string text = run_sentence(ctx, f) + " Marks: rank-sum test against " + escape(s.reference, f) +
+                     ", Holm-corrected at " + significance_level(s.alpha, f) + " (+ " + escape(s.reference, f) +
+                     " better, " + (tex ? "$-$" : "−") + " worse, = no difference).";
+  if (s.target) text += " Success, ERT: reaching " + format_fitness(*s.target, f) + ".";
+  return text + " Bold: best per column.";
 }
 
 }  // namespace
@@ -203,6 +209,12 @@ std::string stats_latex(const CampaignStatistics& s, const ReportContext& ctx) {
          "}{l}{" + mark_counts(s) + "} \\\\\n";
   out += "    \\bottomrule\n  \\end{tabular}\n\\end{table}\n";
   return out;
+}
+
+std::string stats_method(const CampaignStatistics& s) {
+  const std::string text = mark_sentence(s, Format::Markdown) + p_value_sentence(s, Format::Markdown) +
+                           runtime_sentence(s, Format::Markdown);
+  return text.substr(text.find_first_not_of(' '));
 }
 
 std::string stats_csv(const CampaignStatistics& s) {

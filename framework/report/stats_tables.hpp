@@ -17,6 +17,9 @@ std::string stats_markdown(const CampaignStatistics& s, const ReportContext& ctx
 std::string stats_latex(const CampaignStatistics& s, const ReportContext& ctx);
 // Full precision, header row, no caption.
 std::string stats_csv(const CampaignStatistics& s);
+// How the marks, p-values, success rates and ERT are computed, in Markdown,
+// for the results folder's README.md (the caption stays short).
+std::string stats_method(const CampaignStatistics& s);
 
 void write_stats_tables(const std::filesystem::path& dir, const CampaignStatistics& s,
                         const ReportContext& ctx);

@@ -1,6 +1,6 @@
 #include "framework/robust/hinf_norm.hpp"
 
-#include <Eigen/SVD>
+#include "framework/core/eigen.hpp"
 #include <numbers>
 #include <utility>
 #include <algorithm>

@@ -1,7 +1,6 @@
 #include "framework/robust/hinf_synthesis.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
+#include "framework/core/eigen.hpp"
 #include <complex>
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,6 @@
 #include "framework/robust/linear_system.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

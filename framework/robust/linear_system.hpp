@@ -3,7 +3,7 @@
 // from a transfer function, its poles and zeros, its frequency response,
 // series and feedback connections and sampling by zero-order hold. Plain
 // Eigen: SLICOT is not needed for any of these.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <complex>
 #include <vector>
 

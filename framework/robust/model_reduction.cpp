@@ -1,6 +1,6 @@
 #include "framework/robust/model_reduction.hpp"
 
-#include <Eigen/LU>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cstddef>
 

@@ -3,7 +3,7 @@
 // y = C x + D u (continuous) or x(k+1) = A x(k) + B u(k), y = C x + D u
 // (discrete), the type every robust-control routine here takes and returns.
 // Matrices are Eigen's (column-major, as Fortran expects them).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/core/error.hpp"
 

@@ -1,7 +1,6 @@
 #include "framework/stats/forward_regression.hpp"
 
-#include <Eigen/LU>
-#include <Eigen/QR>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

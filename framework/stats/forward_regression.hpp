@@ -34,7 +34,7 @@
 // The chosen columns are fitted together with the fixed ones by least
 // squares on the fit rows; standard errors assume white residuals (a
 // coloured residual makes them optimistic).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

@@ -10,7 +10,7 @@
 // The 99 % band of a white residual is ±2.58/√N per lag.
 //
 // Ljung–Box: Q(h) = N(N+2) Σ_{τ=1..h} r_ee(τ)²/(N−τ), χ²(h) under whiteness.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <vector>
 
 namespace hystbench {

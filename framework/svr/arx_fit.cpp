@@ -1,7 +1,6 @@
 #include "framework/svr/arx_fit.hpp"
 
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
+#include "framework/core/eigen.hpp"
 #include <algorithm>
 #include <cmath>
 

@@ -9,7 +9,7 @@
 // grid (V_N the mean squared equation error over the same N samples for
 // every order), fits whose A(z) has a root on or outside the unit circle
 // rejected.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

@@ -108,7 +108,7 @@ SvrExperiment SvrExperiment::from_json(const nlohmann::json& j, const std::files
                                        const std::string& where) {
   if (!j.is_object()) throw InputError(where + ": the experiment must be a JSON object");
   require_known_keys(j, {"name", "description", "columns", "stage1", "stage2", "tests", "lags", "search", "arx",
-                         "greybox", "discard", "seed", "units", "hyperparameters", "train_rows"},
+                         "greybox", "discard", "seed", "units", "hyperparameters", "train_rows", "records"},
                      where);
   SvrExperiment x;
   x.source = j;

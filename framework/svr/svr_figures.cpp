@@ -42,7 +42,7 @@ fs::path loop_figure(const fs::path& dir, const SvrExperiment& x, const SvrTestR
   const std::string text =
       gnuplot::header(name, "hysteresis loop at " + row.signal->label + ": measured and modelled output against the input",
                       name + ".csv") +
-      "set datafile separator \",\"\nset key top left\nset grid\n" +
+      "set datafile separator \",\"\n" + gnuplot::key_above_plot() + "set grid\n" +
       "set title " + gnuplot::quoted(row.signal->label) + " noenhanced\n" +
       "set xlabel " + gnuplot::quoted(axis("input", x.u_unit)) + " noenhanced\n" +
       "set ylabel " + gnuplot::quoted(axis("output", x.y_unit)) + " noenhanced\n" +

@@ -11,7 +11,7 @@
 // Inputs and outputs are min-max scaled to [-1, 1] with ranges stored in the
 // model. RECONSTRUCTION: the seed gives the structure, m = n = 4 and the
 // orders by AIC, not how the stages are coupled (docs/svr.md#stage-2).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>

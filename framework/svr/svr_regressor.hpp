@@ -5,7 +5,7 @@
 // their coefficients and rho are copied out of libsvm and kept here, so a
 // trained model and one loaded from JSON predict through the same code
 // (libsvm's svm_predict) with the same numbers, bit for bit.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>

@@ -5,6 +5,7 @@
 #include "framework/io/csv_format.hpp"
 #include "framework/io/json_number.hpp"
 #include "framework/report/cell_table.hpp"
+#include "framework/report/results_readme.hpp"
 #include "framework/report/provenance.hpp"
 #include "framework/report/table_format.hpp"
 
@@ -67,12 +68,26 @@ table::CellTable make_table(const SvrExperiment& x, const SvrResults& r, Format 
                       ", epsilon = " + format_number("%.3g", h.epsilon) + ", C = " + format_number("%.4g", h.C) +
                       ", sigma = " + format_number("%.4g", h.sigma) + ")";
   if (x.stage2) model += " then ARX(" + std::to_string(a.p) + ", " + std::to_string(a.q) + ") by AIC";
-  std::string caption = "Free-run modelling errors of `" + x.name + "`, " + model +
-                        "; ARMSE = RMS error, RE = sqrt(sum e^2 / sum y^2), both over each test signal after its first " +
-                        format_number("%.0f", 100.0 * x.discard) + " % (warm-up).";
-  if (x.greybox) caption += " Grey-box: `" + x.greybox->model.text() + "` fitted by `hystbench fit`.";
+  std::string caption = "Free-run errors of `" + x.name + "` on each test signal after a " +
+                        format_number("%.0f", 100.0 * x.discard) + " % warm-up: " + model;
+  if (x.greybox) caption += ", beside the grey-box `" + x.greybox->model.text() + "`";
+  caption += ". ARMSE: RMS error; RE: relative RMS error.";
   t.caption = md ? caption : table::escape_latex(caption);
   return t;
+}
+
+std::string svr_method(const SvrExperiment& x) {
+  std::string text =
+      "One row per test signal, each simulated in free run from the measured initial samples, its first " +
+      format_number("%.0f", 100.0 * x.discard) +
+      " % left out as warm-up. ARMSE is the RMS of the free-run error over the rest, RE = sqrt(Σ e² / Σ y²) "
+      "with the raw output (seed 002's eqs. 17–18), and the one-step RMSE predicts each sample from the "
+      "measured lags. The SVR's hyperparameters were tuned by the experiment's optimizer and the ARX "
+      "orders chosen by AIC (`aic.csv`); `svr.json` holds the search.";
+  if (x.greybox)
+    text += " The grey-box model `" + x.greybox->model.text() + "` was fitted by `hystbench fit` (" +
+            x.greybox_path + ") and simulated over each whole test file.";
+  return text;
 }
 
 std::string table_csv(const SvrExperiment& x, const SvrResults& r) {
@@ -137,7 +152,9 @@ std::vector<std::filesystem::path> write_svr_report(const std::filesystem::path&
       {"table.md", table::markdown(make_table(x, r, Format::Markdown))},
       {"table.tex", table::latex(make_table(x, r, Format::Latex))},
       {"table.csv", table_csv(x, r)},
-      {"svr.json", svr_json(x, r, threads).dump(2) + "\n"}};
+      {"svr.json", svr_json(x, r, threads).dump(2) + "\n"},
+      {"README.md", results_readme("Made by `hystbench svr` from the experiment `" + x.name +
+                                       "` (in `svr.json`).", {{"table", svr_method(x)}})}};
   if (x.stage2) files.emplace_back("aic.csv", aic_csv(r.arx));
   return write_files_atomic(dir, files);
 }

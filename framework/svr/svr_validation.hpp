@@ -1,7 +1,7 @@
 #pragma once
 // Validation errors of stage 1 (docs/svr.md#hyperparameters), on scaled
 // regression rows and targets.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/svr/svr_regressor.hpp"
 

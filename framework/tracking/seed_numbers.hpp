@@ -8,7 +8,7 @@
 //   P = [0 Wr 1; −Wa 0 −L; −Wa 0 −L], Wr = 1/(z L)                 (eqs. 23, 25)
 //
 // at the 10 kHz rate of the seed's dSPACE loop.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 
 namespace hystbench {

@@ -213,7 +213,7 @@ TrackingExperiment TrackingExperiment::from_json(const nlohmann::json& j, const 
   if (!j.is_object()) throw InputError(where + ": expected a JSON object");
   require_known_keys(j, {"name", "description", "sample_rate", "plant", "sensor", "amplifier", "identified",
                          "nominal", "uncertainty", "performance", "reduction", "controllers", "references",
-                         "window", "inverse_tolerance", "units", "seed"},
+                         "window", "inverse_tolerance", "units", "seed", "records"},
                      where);
   TrackingExperiment x;
   x.source = j;

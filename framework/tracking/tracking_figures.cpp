@@ -84,7 +84,7 @@ fs::path bode_figure(const fs::path& dir, const TrackingResults& r) {
                            panel(3, "phase (degree)") + "  unset xlabel\n  unset multiplot\n";
   const std::string text = gp::header("bode", "Bode plot of the full-order and the reduced H-infinity controller",
                                       "bode.csv") +
-                           "set datafile separator \",\"\nset logscale x\nset grid\nset key bottom left\n" +
+                           "set datafile separator \",\"\nset logscale x\nset grid\n" + gp::key_above_plot() +
                            gp::render_all_terminals("bode", body, true);
   return gp::write_script(dir, "bode", text);
 }

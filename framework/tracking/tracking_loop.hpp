@@ -20,7 +20,7 @@
 // a PI (its integrator held on the sample after one the inverse
 // saturated) or nothing. A run whose controller output stops being finite
 // ends there, marked not finite, its scores NaN.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -13,7 +13,7 @@
 //   ARMSE = the mean over those periods of each period's RMS error;
 //   RE    = Σ|e| / Σ|y − offset|, seed 002's eq. 18 about the reference's
 //           centre (the seed's records are centred on zero).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <string>
 #include <vector>

@@ -7,6 +7,7 @@
 #include "framework/io/csv_format.hpp"
 #include "framework/io/json_number.hpp"
 #include "framework/report/cell_table.hpp"
+#include "framework/report/results_readme.hpp"
 #include "framework/report/provenance.hpp"
 #include "framework/report/table_format.hpp"
 #include "framework/robust/linear_system.hpp"
@@ -94,12 +95,21 @@ table::CellTable make_table(const TrackingExperiment& x, const TrackingResults& 
     t.rows.push_back(std::move(cells));
   }
   std::string caption = "Tracking errors of `" + x.name + "` at " + format_number("%g", 1.0 / x.sample_time) +
-                        " Hz: ARMSE = mean per-period RMS error, RE = sum|e| / sum|y - offset|, over " +
-                        "whole periods after settling. Plant: " + x.plant_description + "; controllers built from " +
-                        x.identified.description + ".";
-  if (marked) caption += " †: see the row's status in tracking.json (reference out of range, or the amplifier limited).";
+                        " Hz over whole periods after settling. ARMSE: mean per-period RMS error; RE: "
+                        "sum|e| / sum|y - offset|.";
+  if (marked) caption += " †: limited; see tracking.json.";
   t.caption = md ? caption : table::escape_latex(caption);
   return t;
+}
+
+std::string tracking_method(const TrackingExperiment& x) {
+  return "One row per reference signal, one pair of columns per controller. The loop runs at " +
+         format_number("%g", 1.0 / x.sample_time) + " Hz; errors are taken over whole periods after " +
+         "the settling time. ARMSE is the mean over periods of each period's RMS error, RE = Σ|e| / "
+         "Σ|y − offset| (seed 002's Table 2). Plant: " + x.plant_description + ". The controllers "
+         "were built from " + x.identified.description + " (`controller.json`). A cell marked † did "
+         "not track as asked: its row's status in `tracking.json` says whether the reference was out of "
+         "the actuator's range or the amplifier limited.";
 }
 
 std::string table_csv(const TrackingResults& r) {
@@ -184,7 +194,9 @@ std::vector<std::filesystem::path> write_tracking_report(const std::filesystem::
       {"tracking.json", tracking_json(x, r, threads).dump(2) + "\n"},
       {"table.md", table::markdown(make_table(x, r, Format::Markdown))},
       {"table.tex", table::latex(make_table(x, r, Format::Latex))},
-      {"table.csv", table_csv(r)}};
+      {"table.csv", table_csv(r)},
+      {"README.md", results_readme("Made by `hystbench track` from the experiment `" + x.name +
+                                       "` (in `tracking.json`).", {{"table", tracking_method(x)}})}};
   return write_files_atomic(dir, files);
 }
 

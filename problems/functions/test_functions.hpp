@@ -2,7 +2,7 @@
 // Classic analytic benchmark functions. Their minima are known exactly, so an
 // optimizer can be checked against the truth before it is trusted on
 // measured data, where the best attainable fitness is unknown.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <string>
 #include <vector>
 

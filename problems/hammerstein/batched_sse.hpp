@@ -12,7 +12,7 @@
 // lane, contraction into fused multiply-adds is off (CMakeLists.txt), and
 // lanes never mix. So the value of a candidate does not depend on its
 // neighbours, on the block it landed in, or on the thread count.
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 
 #include "framework/core/problem.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"

@@ -6,7 +6,7 @@
 //
 // Initial state: the system is at rest with zero input before the first
 // sample (u[-1] = 0 and every internal signal at k < 0 is 0).
-#include <Eigen/Core>
+#include "framework/core/eigen.hpp"
 #include <array>
 #include <string>
 #include <vector>

@@ -30,7 +30,7 @@ SyntheticData make_synthetic_data(const HammersteinParams& params, BoucWenForm f
   if (!clean.allFinite() || !linear_blocks_stable(params, Ts))
     throw InputError("parameters: the model diverges on this excitation (unstable block?)");
 
-  Measurement m{ex.t, ex.u, clean, ex.segment, Ts, ""};
+  Measurement m{ex.t, ex.u, clean, ex.segment, Ts, "", "", ""};
   const double sd = add_relative_noise(m.y, noise_relative, seed);
 
   nlohmann::json p = nlohmann::json::object();

@@ -4,7 +4,7 @@
 // norm it promises; bad plants give messages that name the assumption.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
+#include "framework/core/eigen.hpp"
 #include <cmath>
 #include <string>
 

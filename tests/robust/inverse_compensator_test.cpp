@@ -55,7 +55,9 @@ TEST_P(InverseFamily, ModelOfTheInverseGivesBackTheDesiredSignal) {
   EXPECT_EQ(inverse.statistics().saturated, 0);
   EXPECT_LE(inverse.statistics().max_residual, kTolerance);
   EXPECT_GT(inverse.statistics().samples, 0);
-  if (GetParam().strictly_increasing) EXPECT_LE(worst_u, 1e-6);
+  if (GetParam().strictly_increasing) {
+    EXPECT_LE(worst_u, 1e-6);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -327,7 +327,7 @@ class FeedbackHysteresis : public Effect {
       }
     }
 
-    void run(std::span<LaneVector> signal, const LaneChunk& chunk) override {
+    void run(std::span<LaneVector> signal, [[maybe_unused]] const LaneChunk& chunk) override {
       eigen_assert(chunk.begin == 0 && "whole_record(): the record comes in one chunk");
       if (sub_ == 0) return;  // no lane runs
       if (shared_)

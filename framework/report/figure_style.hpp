@@ -1,0 +1,19 @@
+#pragma once
+// How every figure script is laid out, chosen once per command
+// (`--figure-style`): `screen`, the default, titled and sized for a monitor;
+// `paper`, for a journal: no title (the caption says it), a single-column
+// width of 8.5 cm or a double-column 17.5 cm for figures of stacked panels,
+// and fonts at 8 pt at that printed size, so nothing is scaled down.
+#include <string>
+
+namespace hystbench::gnuplot {
+
+enum class FigureStyle { Screen, Paper };
+
+void set_figure_style(FigureStyle style);
+FigureStyle figure_style();
+
+// "screen" or "paper"; InputError naming `where` otherwise.
+FigureStyle parse_figure_style(const std::string& text, const std::string& where);
+
+}  // namespace hystbench::gnuplot
