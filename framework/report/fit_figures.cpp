@@ -36,8 +36,10 @@ constexpr const char* kResidualColour = "#D55E00";
 constexpr std::size_t kMaxLoopPanels = 9;
 // A time plot of more samples than twice this draws, per bin of samples, the
 // range each curve spans (min to max): a fast segment of a long record is
-// then its envelope, not a block of ink, and a slow one still a line.
-constexpr Eigen::Index kTimeBins = 1500;
+// then its envelope, not a block of ink, and a slow one still a line. About
+// half the plot's width in pixels: a segment too fast to draw has at least
+// half a period in each bin.
+constexpr Eigen::Index kTimeBins = 400;
 
 std::string file_label(const std::string& label) {
   std::string out;

@@ -17,7 +17,7 @@ set autoscale xfix
 set offsets graph 0.05, graph 0.02, 0, 0
 set yrange [0:1.02]
 set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
-set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 # no trial reached the target f ≤ 1.217e+04: every line stays at 0.
 set label 1 "no trial reached the target f ≤ 1.217e+04" at graph 0.5, graph 0.5 center front noenhanced font ",14"
 

@@ -17,7 +17,7 @@ set autoscale xfix
 set offsets graph 0.05, graph 0.02, 0, 0
 set yrange [0:1.02]
 set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
-set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
