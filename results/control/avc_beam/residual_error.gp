@@ -8,7 +8,7 @@
 
 set encoding utf8
 set datafile separator ","
-set key outside right top
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
 set xlabel "time (s)"
 set ylabel "residual RMS (dB)"

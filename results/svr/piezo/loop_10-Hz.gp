@@ -8,7 +8,7 @@
 
 set encoding utf8
 set datafile separator ","
-set key top left
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
 set title "10 Hz" noenhanced
 set xlabel "input (V)" noenhanced
