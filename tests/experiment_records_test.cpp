@@ -2,12 +2,10 @@
 // the bundled SVR and tracking experiments must run from a clean checkout.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "tests/run_command.hpp"
 #include "tests/temp_dir.hpp"
 
 namespace hystbench {
@@ -18,20 +16,9 @@ using test_support::contains;
 using test_support::read;
 using test_support::TempDir;
 
-struct Ran {
-  int code;
-  std::string output;
-};
-
 // The built program run inside `dir`, as a user in that folder runs it.
-Ran run_in(const fs::path& dir, const std::string& args) {
-  const std::string command = "cd '" + dir.string() + "' && " + HYSTBENCH_EXE + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+test_support::Outcome run_in(const fs::path& dir, const std::string& args) {
+  return test_support::hystbench(args, dir.string());
 }
 
 // Everything after the two comment lines, which name the file's own path.
@@ -69,7 +56,7 @@ void write_experiment_folder(const TempDir& dir, const std::string& recipe_extra
 TEST(ExperimentRecords, MissingRecordIsSimulatedAndOtherMissingFilesNameTheirScript) {
   const TempDir dir;
   write_experiment_folder(dir);
-  const Ran svr = run_in(dir.path(), "svr experiment.json --out out --quiet");
+  const test_support::Outcome svr = run_in(dir.path(), "svr experiment.json --out out --quiet");
   EXPECT_EQ(svr.code, 2) << svr.output;
   EXPECT_TRUE(contains(svr.output, "made the missing record data/train.csv")) << svr.output;
   EXPECT_TRUE(contains(svr.output, "greybox/fit.json\": file not found")) << svr.output;
@@ -77,7 +64,7 @@ TEST(ExperimentRecords, MissingRecordIsSimulatedAndOtherMissingFilesNameTheirScr
   ASSERT_TRUE(fs::exists(dir.path() / "data/train.csv"));
   EXPECT_FALSE(fs::exists(dir.path() / "out")) << "bad input: nothing written to --out";
 
-  const Ran simulate = run_in(dir.path(),
+  const test_support::Outcome simulate = run_in(dir.path(),
                               "simulate --model hysteresis,msd --params actuator.json --excitation "
                               "train.excitation.json --noise 0.005 --resolution 0.1 --seed 202 "
                               "--input-unit V --output-unit µm --out data/again.csv");
@@ -89,14 +76,14 @@ TEST(ExperimentRecords, MissingRecordIsSimulatedAndOtherMissingFilesNameTheirScr
                        "--input-unit V --output-unit µm --out data/train.csv\n"));
 
   // Present now: not made again.
-  const Ran again = run_in(dir.path(), "svr experiment.json --out out --quiet");
+  const test_support::Outcome again = run_in(dir.path(), "svr experiment.json --out out --quiet");
   EXPECT_FALSE(contains(again.output, "made the missing record")) << again.output;
 }
 
 TEST(ExperimentRecords, ABadRecipeIsRefusedBeforeAnythingIsWritten) {
   const TempDir dir;
   write_experiment_folder(dir, R"(, "noize": 0.1)");
-  const Ran svr = run_in(dir.path(), "svr experiment.json --out out --quiet");
+  const test_support::Outcome svr = run_in(dir.path(), "svr experiment.json --out out --quiet");
   EXPECT_EQ(svr.code, 2) << svr.output;
   EXPECT_TRUE(contains(svr.output, "records.json.simulate[0]")) << svr.output;
   EXPECT_TRUE(contains(svr.output, "noize")) << svr.output;

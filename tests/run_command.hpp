@@ -13,8 +13,11 @@ struct Outcome {
   std::string output;  // stdout and stderr
 };
 
-inline Outcome hystbench(const std::string& args) {
-  const std::string command = std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
+// `in_dir`: the folder to run it in, as a user working there would (default:
+// the test's own).
+inline Outcome hystbench(const std::string& args, const std::string& in_dir = "") {
+  const std::string command =
+      (in_dir.empty() ? "" : "cd '" + in_dir + "' && ") + std::string(HYSTBENCH_EXE) + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string out;
   char buf[4096];
