@@ -102,14 +102,14 @@ std::string convergence_plot(const std::vector<const ConvergenceCurve*>& curves,
 }
 
 // Upper end of the fitness axis, so that the whole trace shows: above the
-// highest median. Only when the first candidates of a model that can
+// highest median or upper quartile. Only when the first candidates of a model that can
 // diverge reach astronomically large (finite) fitness, more than kDecades
 // above the highest median once 1 % of the budget is spent, would that
 // flatten every curve against the axis; then the axis stops at 3x that
 // median and a label says how high the traces start.
 struct FitnessAxisTop {
   double top = 0.0;      // 0: leave the range to gnuplot
-  double highest = 0.0;  // the highest median, drawn or not
+  double highest = 0.0;  // the highest median or upper quartile, drawn or not
   bool clipped() const { return top > 0 && highest > top; }
 };
 
