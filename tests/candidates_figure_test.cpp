@@ -43,10 +43,10 @@ TEST(CandidatesFigure, EachKindOfBarIsMarkedWithTheCurrentErrorOfItsKind) {
   for (const char* part :
        {"using ($0 - 0.19):2:xtic(1) with boxes lc rgb '#0072B2' title 'estimation'",
         "using ($0 - 0.37):(current_estimation):(bar):(0) with vectors nohead lw 3 "
-        "lc rgb '#0072B2' title 'current model, estimation'",
+        "lc rgb '#0072B2' title 'current, estimation'",
         "using ($0 + 0.19):3 with boxes lc rgb '#D55E00' title 'held out'",
         "using ($0 + 0.01):(current_heldout):(bar):(0) with vectors nohead lw 3 "
-        "lc rgb '#D55E00' title 'current model, held out'",
+        "lc rgb '#D55E00' title 'current, held out'",
         "\nbar = 0.36 "})
     EXPECT_TRUE(contains(gp, part)) << part << " missing from:\n" << gp;
   // Room on the left for "feedback_hysteresis" (19 letters) turned 45 degrees.

@@ -3,6 +3,7 @@
 #include "tests/temp_dir.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -374,6 +375,9 @@ TEST(FigureStyle, PaperDropsTitlesAndUsesColumnWidths) {
     EXPECT_TRUE(contains(single, part)) << part << " missing from:\n" << single;
   EXPECT_FALSE(contains(single, "  set title"));
   EXPECT_TRUE(contains(gnuplot::render_all_terminals("f", "plot x\n", true), "pdfcairo size 17.5cm,12cm"));
+  const std::string stacked = gnuplot::render_all_terminals(
+      "f", "  set multiplot layout 2, 1 title \"A \\\"b\\\"\" noenhanced\n  plot x\n", true);
+  EXPECT_TRUE(contains(stacked, "  set multiplot layout 2, 1\n")) << stacked;
   TempDir dir;
   const std::vector<ConvergenceCurve> curves{convergence_curve("de_1", two_trials(), 200)};
   const std::string gp = read(write_convergence_figure(dir.path(), curves, sample_context()));
@@ -459,6 +463,16 @@ TEST(FitFigures, RejectsMismatchedLengths) {
                std::invalid_argument);
 }
 
+// The first data line of a binned time plot: t, then min and max of y and model.
+std::array<double, 5> first_bin(const std::filesystem::path& dat) {
+  std::ifstream in(dat);
+  std::string header;
+  std::getline(in, header);
+  std::array<double, 5> v{};
+  for (double& x : v) in >> x;
+  return v;
+}
+
 // A long record is drawn as the range of each curve per bin of samples: a
 // fast segment shows as its envelope, not as a block of ink.
 TEST(FitFigures, LongRecordsAreDrawnAsEnvelopesPerBin) {
@@ -473,19 +487,21 @@ TEST(FitFigures, LongRecordsAreDrawnAsEnvelopesPerBin) {
   EXPECT_TRUE(contains(gp, "fit_de_time.dat")) << gp;
   EXPECT_TRUE(contains(gp, "with filledcurves")) << gp;
   const std::string dat = read(dir.path() / "fit_de_time.dat");
-  std::istringstream lines(dat);
-  std::string header, first;
-  std::getline(lines, header);
-  std::getline(lines, first);
-  EXPECT_EQ(header, "# t y_min y_max model_min model_max residual_min residual_max");
-  // Bin 0 holds samples 0..14, three quarters of a period of the 50 Hz sine.
-  std::istringstream fields(first);
-  double tm, ymin, ymax, mmin, mmax;
-  fields >> tm >> ymin >> ymax >> mmin >> mmax;
-  EXPECT_NEAR(ymin, y.head(15).minCoeff(), 1e-9);
-  EXPECT_NEAR(ymax, y.head(15).maxCoeff(), 1e-9);
-  EXPECT_NEAR(mmax, 0.9 * ymax, 1e-9);
+  EXPECT_EQ(dat.substr(0, dat.find('\n')), "# t y_min y_max model_min model_max residual_min residual_max");
   EXPECT_EQ(std::count(dat.begin(), dat.end(), '\n'), 401);
+  // A bin holds 15 samples, three quarters of a period: the sine turns three
+  // times in bins 0 and 1, so bin 0 spans both, the whole swing, and its
+  // edge does not zigzag with the bins that miss a peak.
+  const auto fast = first_bin(dir.path() / "fit_de_time.dat");
+  EXPECT_NEAR(fast[1], y.head(30).minCoeff(), 1e-9);
+  EXPECT_NEAR(fast[2], y.head(30).maxCoeff(), 1e-9);
+  EXPECT_NEAR(fast[4], 0.9 * fast[2], 1e-9);
+  // A slow sine keeps each bin's own range: its edges trace the curve.
+  for (Eigen::Index i = 0; i < n; ++i) y[i] = std::sin(2 * M_PI * 0.5 * t[i]);
+  write_fit_figures(dir.path(), "slow", t, y, y, 0.9 * y, {}, sample_context());
+  const auto slow = first_bin(dir.path() / "fit_slow_time.dat");
+  EXPECT_NEAR(slow[1], y.head(15).minCoeff(), 1e-9);
+  EXPECT_NEAR(slow[2], y.head(15).maxCoeff(), 1e-9);
   // A short record keeps every sample.
   const FitData d = fit_data();
   EXPECT_TRUE(contains(read(write_fit_figures(dir.path(), "short", d.t, d.u, d.y, d.yhat, d.segments,

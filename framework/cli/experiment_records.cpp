@@ -35,14 +35,14 @@ SimulationRecipe read_recipe(const nlohmann::json& j, const std::string& where) 
   r.excitation = required_text(j, "excitation", where);
   r.model = optional_text(j, "model", "", where);
   r.form = optional_text(j, "form", r.form, where);
-  if (r.form != "increment" && r.form != "paper")
+  if (!known_form(r.form))
     throw InputError(where + ".form = \"" + r.form + "\": give \"increment\" or \"paper\"");
   r.input_unit = optional_text(j, "input_unit", "", where);
   r.output_unit = optional_text(j, "output_unit", "", where);
   r.input_hold = parse_input_hold(optional_text(j, "input_hold", "spline", where), where + ".input_hold");
-  r.noise = optional_number(j, "noise", r.noise, 0.0, 10.0, where);
-  r.resolution = optional_number(j, "resolution", 0.0, 0.0, 1e6, where);
-  r.substeps = static_cast<int>(optional_number(j, "substeps", 0, 0, 1000, where));
+  r.noise = optional_number(j, "noise", r.noise, 0.0, kMaxRecipeNoise, where);
+  r.resolution = optional_number(j, "resolution", 0.0, 0.0, kMaxRecipeResolution, where);
+  r.substeps = static_cast<int>(optional_number(j, "substeps", 0, 0, kMaxRecipeSubsteps, where));
   const double seed = optional_number(j, "seed", 1, 0, 9007199254740992.0, where);
   if (seed != static_cast<double>(static_cast<std::uint64_t>(seed)))
     throw InputError(where + ".seed: give a whole number of 0 or more");
@@ -100,11 +100,6 @@ std::string make_missing_records(const fs::path& experiment, std::ostream& log) 
         << " samples) as `" << simulate_command_line(r.recipe) << "` does\n";
   }
   return made_by;
-}
-
-std::string with_maker(const std::string& message, const std::string& made_by) {
-  if (made_by.empty() || message.find("file not found") == std::string::npos) return message;
-  return message + "; " + made_by + " makes the files this experiment reads";
 }
 
 }  // namespace hystbench::cli

@@ -27,17 +27,15 @@ namespace hystbench::cli {
 // InputError before anything is written.
 std::string make_missing_records(const std::filesystem::path& experiment, std::ostream& log);
 
-// `message` of a file-not-found error, with the script that makes the file.
-std::string with_maker(const std::string& message, const std::string& made_by);
-
 // Makes the missing records, then loads the experiment.
 template <class Experiment>
 Experiment load_with_records(const std::filesystem::path& experiment, std::ostream& log) {
   const std::string made_by = make_missing_records(experiment, log);
   try {
     return Experiment::load(experiment);
-  } catch (const InputError& e) {
-    throw InputError(with_maker(e.what(), made_by));
+  } catch (const MissingFileError& e) {
+    if (made_by.empty()) throw;
+    throw MissingFileError(std::string(e.what()) + "; " + made_by + " makes the files this experiment reads");
   }
 }
 

@@ -33,18 +33,18 @@ Action add_simulate_command(CLI::App& app) {
                   "the Hammerstein seed model");
   cmd->add_option("--substeps", o->substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
-      ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
+      ->capture_default_str()->check(number_range(0, kMaxRecipeSubsteps, kSubstepsHint));
   cli::add_input_hold_option(cmd, o->input_hold, "as a stream runs the model");
   cmd->add_option("--excitation", o->excitation, "JSON excitation spec (sine / sweep / steps segments)")
       ->required();
   cmd->add_option("--noise", o->noise, "noise sd as a fraction of the output RMS")
       ->capture_default_str()
-      ->check(number_range(0.0, 10.0, "give a fraction of the output RMS from 0 to 10"));
+      ->check(number_range(0.0, kMaxRecipeNoise, "give a fraction of the output RMS from 0 to 10"));
   cmd->add_option("--resolution", o->resolution,
                   "sensor resolution in output units: y is rounded to its multiples after the "
                   "noise (0: none; needs --model)")
       ->capture_default_str()
-      ->check(number_range(0.0, 1e6, "give a resolution of 0 (none) or more"));
+      ->check(number_range(0.0, kMaxRecipeResolution, "give a resolution of 0 (none) or more"));
   cmd->add_option("--seed", o->seed, "noise seed")->capture_default_str();
   cmd->add_option("--form", o->form, "Bouc-Wen form")->capture_default_str()
       ->check(CLI::IsMember({"increment", "paper"}));

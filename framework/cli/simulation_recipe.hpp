@@ -11,6 +11,15 @@
 
 namespace hystbench::cli {
 
+// The largest values simulate takes, on its command line and in a records
+// file alike.
+inline constexpr double kMaxRecipeNoise = 10.0;       // a fraction of the output RMS
+inline constexpr double kMaxRecipeResolution = 1e6;  // output units
+inline constexpr int kMaxRecipeSubsteps = 1000;
+
+// Whether `form` names a Bouc-Wen form simulate knows.
+inline bool known_form(const std::string& form) { return form == "increment" || form == "paper"; }
+
 struct SimulationRecipe {
   std::string params, excitation, out, form = "increment", input_unit, output_unit, model;
   InputHold input_hold = InputHold::Spline;

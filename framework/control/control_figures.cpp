@@ -8,6 +8,7 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
 #include "framework/model/spectrum.hpp"
+#include "framework/report/figure_style.hpp"
 #include "framework/report/gnuplot_script.hpp"
 
 namespace hystbench {
@@ -94,11 +95,20 @@ std::string plot_lines(const std::vector<Curve>& cs, const std::string& file, in
   return plot + "\n";
 }
 
+// Every figure names every controller in its key: a long list of names
+// takes the double column.
+bool wide(const std::vector<Curve>& cs) {
+  std::vector<std::string> titles;
+  for (const auto& c : cs) titles.push_back(c.title);
+  return gnuplot::key_needs_double_column(titles);
+}
+
 fs::path script(const fs::path& dir, const std::string& name, const std::string& shows,
-                const std::string& reads, const std::string& settings, const std::string& plot) {
+                const std::string& reads, const std::string& settings, const std::string& plot,
+                bool double_column) {
   const std::string text = gnuplot::header(name, shows, reads) +
                            "set datafile separator \",\"\n" + gnuplot::key_above_plot() + "set grid\n" +
-                           settings + gnuplot::render_all_terminals(name, plot);
+                           settings + gnuplot::render_all_terminals(name, plot, double_column);
   return gnuplot::write_script(dir, name, text);
 }
 
@@ -107,6 +117,7 @@ fs::path script(const fs::path& dir, const std::string& name, const std::string&
 std::vector<fs::path> write_control_figures(const fs::path& dir, const ControlExperiment& x,
                                             const ControlResults& r) {
   const auto cs = curves(r);
+  const bool double_column = wide(cs);
   const int decimate = std::max(1, int(std::lround(x.loop.sample_rate_hz / 50.0)));  // 50 points a second
   const double reference = steady_rms(r.uncontrolled.first_trial.true_error, x.windows);
   write_file_atomic(dir / "traces.csv", traces_csv(cs, x, decimate, reference));
@@ -117,18 +128,19 @@ std::vector<fs::path> write_control_figures(const fs::path& dir, const ControlEx
       script(dir, "residual_error",
              "1 s moving RMS of the true residual error, dB re the uncontrolled steady level",
              traces, "set xlabel \"time (s)\"\nset ylabel \"residual RMS (dB)\"\n",
-             plot_lines(cs, "traces.csv", 2, 3)),
+             plot_lines(cs, "traces.csv", 2, 3), double_column),
       script(dir, "step_size", "step size mu(n) of every controlled run", traces,
              "set xlabel \"time (s)\"\nset ylabel \"step size\"\nset logscale y\n",
-             plot_lines(cs, "traces.csv", 3, 3, 1)),
+             plot_lines(cs, "traces.csv", 3, 3, 1), double_column),
       script(dir, "weight_norm", "norm of the controller weights |w(n)|", traces,
-             "set xlabel \"time (s)\"\nset ylabel \"|w|\"\n", plot_lines(cs, "traces.csv", 4, 3, 1)),
+             "set xlabel \"time (s)\"\nset ylabel \"|w|\"\n", plot_lines(cs, "traces.csv", 4, 3, 1),
+             double_column),
       script(dir, "spectrum",
              "Welch spectrum of the true (noise-free) error over the steady window, "
              "uncontrolled and controlled",
              "spectrum.csv", "set xlabel \"frequency (Hz)\"\nset ylabel \"power (dB)\"\nset xrange [0:" +
                                  gnuplot::number(std::min(x.loop.sample_rate_hz / 2, 8 * x.loop.disturbance_hz)) + "]\n",
-             plot_lines(cs, "spectrum.csv", 2, 1)),
+             plot_lines(cs, "spectrum.csv", 2, 1), double_column),
   };
 }
 

@@ -13,4 +13,11 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A named input file that does not exist. Its own type, so that a caller
+// that knows which script makes the file can say so.
+class MissingFileError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 }  // namespace hystbench

@@ -35,7 +35,7 @@ std::string reference_marks(double offset, const char* colour, const std::string
                             const std::string& current) {
   return "'diagnosis_candidates.csv' skip 1 using " + shifted(offset - kBarWidth / 2) + ":(" +
          current + "):(bar):(0) with vectors nohead lw 3 lc rgb '" + colour +
-         "' title 'current model, " + name + "'";
+         "' title 'current, " + name + "'";
 }
 
 // The first label, turned 45 degrees, reaches about 0.7 of its length left
@@ -97,7 +97,8 @@ std::filesystem::path write_candidates_figure(const std::filesystem::path& dir, 
       "sigma = " + gnuplot::number(sigma) + "  # noise floor estimate\n" +
       (d.candidates.empty()
            ? "# No candidate effect was tried: nothing to draw.\n"
-           : gnuplot::render_all_terminals("diagnosis_candidates", plot_body(d, heldout, unit)));
+           : gnuplot::render_all_terminals("diagnosis_candidates", plot_body(d, heldout, unit),
+                                                    true));
   return gnuplot::write_script(dir, "diagnosis_candidates", text);
 }
 

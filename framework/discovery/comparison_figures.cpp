@@ -6,6 +6,8 @@
 #include "framework/io/segment_runs.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
+#include "framework/report/figure_style.hpp"
+#include "framework/report/fit_axis_tics.hpp"
 #include "framework/report/gnuplot_script.hpp"
 
 namespace hystbench {
@@ -56,6 +58,23 @@ std::vector<std::pair<double, double>> heldout_spans(const ComparisonInput& in) 
   return spans;
 }
 
+// Whether every segment name fits above its run: inside the frame and clear
+// of the name two runs back, which shares its row (names alternate rows).
+bool names_fit(const ComparisonInput& in, const std::vector<SegmentRun>& runs) {
+  const double t0 = in.t[0], span = in.t[in.t.size() - 1] - t0;
+  const double character = 1.0 / gp::characters_across();  // as a share of the width
+  std::vector<std::pair<double, double>> extent;             // left and right edge of each name
+  for (const auto& run : runs) {
+    const double mid = ((in.t[run.begin] + in.t[run.end - 1]) / 2 - t0) / span;
+    const double half = 0.5 * character * double(run.label.size());
+    extent.push_back({mid - half, mid + half});
+    const std::size_t k = extent.size() - 1;
+    if (extent[k].first < 0 || extent[k].second > 1 || (k >= 2 && extent[k - 2].second > extent[k].first))
+      return false;
+  }
+  return span > 0;
+}
+
 std::string residual_marks(const ComparisonInput& in) {
   std::string out;
   const auto spans = heldout_spans(in);
@@ -67,7 +86,7 @@ std::string residual_marks(const ComparisonInput& in) {
              ", graph 1 behind fc rgb \"#e6e6e6\" fs solid 1.0 noborder\n";
   }
   const auto runs = segment_runs(in.segment, in.t.size());
-  const bool named = !in.segment.empty() && runs.size() <= kMaxNamedRuns;
+  const bool named = !in.segment.empty() && runs.size() <= kMaxNamedRuns && names_fit(in, runs);
   for (std::size_t k = 0; k < runs.size() && !in.segment.empty(); ++k) {
     const double begin = in.t[runs[k].begin], end = in.t[runs[k].end - 1];
     if (k > 0)
@@ -83,8 +102,11 @@ std::string residual_marks(const ComparisonInput& in) {
 fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const Comparison& m,
                          const std::string& title) {
   std::string data = "# t residual\n";
-  for (Eigen::Index i = 0; i < in.t.size(); ++i)
+  figure_script::Span span;
+  for (Eigen::Index i = 0; i < in.t.size(); ++i) {
     data += gp::number(in.t[i]) + " " + gp::number(in.y[i] - in.y_model[i]) + "\n";
+    span.add(in.y[i] - in.y_model[i]);
+  }
   write_file_atomic(dir / "residual.dat", data);
   const double sigma = m.noise_floor.sigma;
   const bool has_heldout = m.parts.heldout.has_value();
@@ -105,13 +127,13 @@ fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const C
       "residual_label = " + gp::quoted(with_unit("Residual y − ŷ", in.y_unit)) + "\n" +
       "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" + "set title " +
       gp::quoted("Residual — " + title) +
-      " noenhanced offset 0, 1.2\n"
+      " noenhanced\n"
       "set xlabel \"Time t [s]\"\nset ylabel residual_label\n"
       "set grid lt 1 lc rgb \"#e0e0e0\" lw 1\nset autoscale xfix\n"
       "# Room above the data for the segment names; the key sits above the frame.\n"
-      "set offsets 0, 0, graph 0.2, graph 0.05\nset tmargin 4\n"
-      "set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5\n" +
-      residual_marks(in) + gp::render_all_terminals("residual", body);
+      "set offsets 0, 0, graph 0.2, graph 0.05\n" +
+      gp::key_above_plot() +
+      figure_script::ytics(span, 4) + residual_marks(in) + gp::render_all_terminals("residual", body);
   return gp::write_script(dir, "residual", script);
 }
 
@@ -119,6 +141,13 @@ fs::path residual_figure(const fs::path& dir, const ComparisonInput& in, const C
 
 const char* part_colour(const std::string& part) {
   return part == "heldout" ? kHeldoutColour : part == "mixed" ? kMixedColour : kEstimationColour;
+}
+
+// The width of the bars' names side by side, with a space between two.
+double label_characters(const std::vector<SegmentErrors>& segs) {
+  double sum = 0;
+  for (const auto& seg : segs) sum += double(seg.segment.size()) + 2;
+  return sum;
 }
 
 fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Comparison& m,
@@ -134,6 +163,10 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Co
   }
   if (segs.empty())
     data += "0 \"all\" " + gp::number(m.parts.all.rmse) + " estimation\n";
+  figure_script::Span span;
+  span.add(0.0);
+  span.add(segs.empty() ? m.parts.all.rmse : 0.0);
+  for (const auto& seg : segs) span.add(seg.metrics.rmse);
   write_file_atomic(dir / "segment_rmse.dat", data);
   const std::size_t bars = std::max<std::size_t>(1, segs.size());
   const double sigma = m.noise_floor.sigma;
@@ -161,19 +194,18 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Co
       "sigma = " + gp::number(sigma) + "  # noise floor estimate\n" + "set title " +
       gp::quoted("Error per segment — " + title) +
       " noenhanced\n"
-      "set ylabel rmse_label\nset yrange [0:*]\n"
+      "set ylabel rmse_label\nset yrange [0:" + gp::number(1.08 * span.hi) + "]\n"
       "set xrange [-0.6:" +
       gp::number(double(bars) - 0.4) +
       "]\n"
       "set style fill solid 0.85 border rgb \"#404040\"\nset boxwidth 0.7\n"
       "# Many segments: names upright, ending at their bar, so none leaves the page.\n"
       "set xtics nomirror noenhanced" +
-      (bars > 6 ? " rotate by 90 right" : "") +
+      (label_characters(segs) > gp::characters_across() ? " rotate by 90 right" : "") +
       "\n"
-      "set grid ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n"
-      "set title offset 0, 1.2\nset tmargin 4\n"
-      "set key at graph 0, graph 1.01 left bottom horizontal samplen 2\n" +
-      gp::render_all_terminals("segment_rmse", body);
+      "set grid ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" +
+      gp::key_above_plot() +
+      figure_script::ytics(span, 4) + gp::render_all_terminals("segment_rmse", body);
   return gp::write_script(dir, "segment_rmse", script);
 }
 

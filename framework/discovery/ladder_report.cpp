@@ -73,7 +73,7 @@ std::filesystem::path write_ladder_figure(const std::filesystem::path& dir, cons
   write_file_atomic(dir / "ladder.csv", csv.str());
   const std::string unit = ctx.source.y_unit.empty() ? "" : " [" + ctx.source.y_unit + "]";
   std::ostringstream body;
-  body << "set datafile separator ','\nset key outside top center horizontal\nset grid\n"
+  body << "set datafile separator ','\n" << gnuplot::key_above_plot() << "set grid\n"
        << "set logscale y\nset xtics noenhanced\nset offsets 0.3, 0.3, 0, 0\n"
        << "set xlabel 'effect added at each step'\n"
        << "set ylabel " << gnuplot::quoted("RMSE" + unit) << "\n"
@@ -81,14 +81,14 @@ std::filesystem::path write_ladder_figure(const std::filesystem::path& dir, cons
        << " noenhanced\n"
        << "sigma = " << gnuplot::number(estimated_sigma(ladder)) << "\n"
        << "truth = " << gnuplot::number(ctx.true_noise_sd.value_or(std::nan(""))) << "\n"
-       << "plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation RMSE', \\\n"
-       << "     '' using 1:4 with linespoints lw 2 pt 5 title 'held-out RMSE', \\\n"
-       << "     sigma with lines dt 2 lw 2 lc rgb '#808080' title 'estimated noise σ'"
-       << (ctx.true_noise_sd ? ", \\\n     truth with lines dt 3 lw 2 lc rgb 'black' title 'true noise σ'"
+       << "plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation', \\\n"
+       << "     '' using 1:4 with linespoints lw 2 pt 5 title 'held out', \\\n"
+       << "     sigma with lines dt 2 lw 2 lc rgb '#808080' title 'σ estimated'"
+       << (ctx.true_noise_sd ? ", \\\n     truth with lines dt 3 lw 2 lc rgb 'black' title 'σ true'"
                              : "")
        << "\n";
   const std::string text =
-      gnuplot::header("ladder", "the error falling as effects are added", "ladder.csv") +
+      gnuplot::header("ladder", "the error falling as effects are added (σ: the noise sd)", "ladder.csv") +
       gnuplot::render_all_terminals("ladder", body.str());
   return gnuplot::write_script(dir, "ladder", text);
 }

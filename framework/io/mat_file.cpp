@@ -190,7 +190,7 @@ MatReader::MatReader(const fs::path& path)
   silence_matio();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
-    throw InputError(name_ + ": file not found; check the path (a relative path starts at the "
+    throw MissingFileError(name_ + ": file not found; check the path (a relative path starts at the "
                              "current folder)");
   handle_->mat = Mat_Open(name_.c_str(), MAT_ACC_RDONLY);
   if (handle_->mat == nullptr)

@@ -52,7 +52,7 @@ std::string read_text(const fs::path& path) {
   const std::string name = path.string();
   std::error_code ec;
   if (!fs::exists(path, ec))
-    throw InputError(name + ": file not found; check the path (a relative path starts at the "
+    throw MissingFileError(name + ": file not found; check the path (a relative path starts at the "
                             "current folder)");
   if (fs::is_directory(path, ec))
     throw InputError(name + ": is a folder; give the path of a measurement CSV file");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "framework/report/figure_style.hpp"
 #include "framework/report/gnuplot_script.hpp"
 
 namespace hystbench::figure_script {
@@ -36,6 +37,13 @@ std::string residual_axis(const Span& s) {
   const double step = m >= 5 * decade ? 5 * decade : (m >= 2 * decade ? 2 * decade : decade);
   return "  set yrange [" + gnuplot::number(-1.08 * m) + ":" + gnuplot::number(1.08 * m) + "]\n  set ytics " +
          gnuplot::number(-step) + ", " + gnuplot::number(step) + ", " + gnuplot::number(step) + "\n";
+}
+
+std::string xy_tics(const Span& x, const Span& y) {
+  const double intervals = gnuplot::figure_style() == gnuplot::FigureStyle::Paper ? 3 : 5;
+  const double x_step = tic_step(x, intervals), y_step = tic_step(y, intervals);
+  return (x_step > 0 ? "set xtics " + gnuplot::number(x_step) + "\n" : "") +
+         (y_step > 0 ? "set ytics " + gnuplot::number(y_step) + "\n" : "");
 }
 
 }  // namespace hystbench::figure_script

@@ -1,6 +1,7 @@
 #pragma once
-// Tic spacing for the panels of the fit figures. gnuplot's automatic tics
-// ignore the panel size, so short or narrow panels get them from here.
+// Tic spacing for figure panels. gnuplot's automatic tics ignore the panel
+// size, so short or narrow panels (and the paper style's single column)
+// get them from here.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,5 +29,9 @@ std::string ytics(const Span& s, double intervals);
 // Symmetric about zero, so a bias of the model shows as an off-centre
 // band; three tics fit even the short panel of the PDF.
 std::string residual_axis(const Span& s);
+
+// `set xtics STEP` and `set ytics STEP` lines for a plot of x against y:
+// about five intervals each, three in the paper style's single column.
+std::string xy_tics(const Span& x, const Span& y);
 
 }  // namespace hystbench::figure_script

@@ -102,15 +102,44 @@ struct TimeFigure {
 
 // One row per bin of samples: t of the bin's middle, then min and max of the
 // measurement, the model and the residual.
-std::string envelope_data(const Eigen::VectorXd& t, const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
-  std::string out = "# t y_min y_max model_min model_max residual_min residual_max\n";
-  const Eigen::Index n = t.size();
+struct BinRanges {
+  Eigen::MatrixXd lo, hi;  // one row per bin; columns y, model, residual
+  std::vector<int> turns;  // reversals of the model's direction inside the bin
+};
+
+BinRanges bin_ranges(const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
+  const Eigen::Index n = y.size();
+  BinRanges r{Eigen::MatrixXd(kTimeBins, 3), Eigen::MatrixXd(kTimeBins, 3), std::vector<int>(kTimeBins, 0)};
   for (Eigen::Index b = 0; b < kTimeBins; ++b) {
-    const Eigen::Index begin = b * n / kTimeBins, end = (b + 1) * n / kTimeBins, len = end - begin;
-    const Eigen::VectorXd r = y.segment(begin, len) - yhat.segment(begin, len);
-    out.append(gnuplot::number(t[(begin + end - 1) / 2]));
-    for (const Eigen::VectorXd& v : {Eigen::VectorXd(y.segment(begin, len)), Eigen::VectorXd(yhat.segment(begin, len)), r})
-      out.append(" ").append(gnuplot::number(v.minCoeff())).append(" ").append(gnuplot::number(v.maxCoeff()));
+    const Eigen::Index begin = b * n / kTimeBins, len = (b + 1) * n / kTimeBins - begin;
+    const Eigen::VectorXd res = y.segment(begin, len) - yhat.segment(begin, len);
+    r.lo.row(b) << y.segment(begin, len).minCoeff(), yhat.segment(begin, len).minCoeff(), res.minCoeff();
+    r.hi.row(b) << y.segment(begin, len).maxCoeff(), yhat.segment(begin, len).maxCoeff(), res.maxCoeff();
+    for (Eigen::Index i = std::max<Eigen::Index>(begin, 1); i + 1 < begin + len; ++i)
+      r.turns[b] += (yhat[i] - yhat[i - 1]) * (yhat[i + 1] - yhat[i]) < 0;
+  }
+  return r;
+}
+
+// Per bin: t, then min and max of y, model and residual. Where the model
+// turns three times or more within a bin and its neighbours (a period
+// spans at most two bins), each bin takes its neighbours' range too:
+// otherwise bins that hold a peak alternate with bins that miss it and the
+// edges zigzag.
+std::string envelope_data(const Eigen::VectorXd& t, const Eigen::VectorXd& y, const Eigen::VectorXd& yhat) {
+  const BinRanges r = bin_ranges(y, yhat);
+  const Eigen::Index n = t.size();
+  std::string out = "# t y_min y_max model_min model_max residual_min residual_max\n";
+  for (Eigen::Index b = 0; b < kTimeBins; ++b) {
+    const Eigen::Index first = std::max<Eigen::Index>(b - 1, 0), last = std::min(b + 1, kTimeBins - 1);
+    int turns = 0;
+    for (Eigen::Index k = first; k <= last; ++k) turns += r.turns[k];
+    const Eigen::Index from = turns >= 3 ? first : b, count = turns >= 3 ? last - first + 1 : 1;
+    const Eigen::RowVector3d lo = r.lo.middleRows(from, count).colwise().minCoeff();
+    const Eigen::RowVector3d hi = r.hi.middleRows(from, count).colwise().maxCoeff();
+    out.append(gnuplot::number(t[(b * n / kTimeBins + (b + 1) * n / kTimeBins - 1) / 2]));
+    for (int c = 0; c < 3; ++c)
+      out.append(" ").append(gnuplot::number(lo[c])).append(" ").append(gnuplot::number(hi[c]));
     out.append("\n");
   }
   return out;
@@ -251,7 +280,7 @@ fs::path time_script(const fs::path& dir, const std::string& stem, const std::st
                       f.envelope ? f.csv + " (" + std::to_string(kTimeBins) +
                                        " bins of samples: t, then min and max of y, model, residual)"
                                  : stem + ".csv (t,u,y_measured,y_model,residual[,segment])") +
-          axes + gnuplot::render_all_terminals(name, time_body(f)));
+          axes + gnuplot::render_all_terminals(name, time_body(f), true));
 }
 
 fs::path loops_script(const fs::path& dir, const std::string& stem, const std::string& who,
@@ -269,7 +298,8 @@ fs::path loops_script(const fs::path& dir, const std::string& stem, const std::s
       gnuplot::header(name, "input-output (u-y) loops, measured and model",
                     name + ".dat (one index block per segment: u y_measured y_model)") +
           axes + loops_settings(segs, shown, u, y, yhat) +
-          gnuplot::render_all_terminals(name, loops_body(name + ".dat", gnuplot::quoted(title))));
+          gnuplot::render_all_terminals(name, loops_body(name + ".dat", gnuplot::quoted(title)),
+                                        true));
 }
 
 void check_sizes(const Eigen::VectorXd& t, const Eigen::VectorXd& u, const Eigen::VectorXd& y,

@@ -63,6 +63,18 @@ std::string paper_terminals(bool tall) {
          "  if (ext eq \"pdf\") { set terminal pdfcairo size " + pdf + " font \"Helvetica,8\" }\n";
 }
 
+// `set multiplot ... title "..." [noenhanced] ...` without the title and its
+// options: a stacked figure is captioned like any other.
+std::string without_multiplot_title(const std::string& line) {
+  const std::size_t key = line.find(" title \"");
+  if (key == std::string::npos) return line;
+  std::size_t end = key + 8;
+  while (end < line.size() && line[end] != '"') end += line[end] == '\\' ? 2 : 1;
+  std::string rest = line.substr(std::min(end + 1, line.size()));
+  if (rest.rfind(" noenhanced", 0) == 0) rest.erase(0, 11);  // belongs to the title
+  return line.substr(0, key) + rest;
+}
+
 // The caption carries the title in a paper: every `set title` line of the
 // plot commands becomes `unset title`, and the loop starts untitled.
 std::string without_titles(const std::string& body) {
@@ -75,6 +87,8 @@ std::string without_titles(const std::string& body) {
     const std::size_t text = line.find_first_not_of(' ');
     if (text != std::string::npos && line.compare(text, 10, "set title ") == 0)
       out += line.substr(0, text) + "unset title";
+    else if (text != std::string::npos && line.compare(text, 14, "set multiplot ") == 0)
+      out += without_multiplot_title(line);
     else
       out += line;
     if (end < body.size()) out += '\n';

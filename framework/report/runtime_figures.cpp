@@ -81,7 +81,7 @@ std::string ecdf_settings(const ReportContext& ctx, double target) {
          gnuplot::quoted("fraction of " + std::to_string(ctx.trials) +
                          " trials with best fitness <= " + four_digits(target)) +
          " noenhanced\n"
-         "set xlabel \"Function evaluations\"\nset ylabel \"Fraction of trials at the target\"\n"
+         "set xlabel \"Function evaluations\"\nset ylabel \"Share of trials at target\"\n"
          "set logscale x\nset format x \"10^{%L}\"\nset autoscale xfix\nset offsets graph 0.05, graph 0.02, 0, 0\n"
          "set yrange [0:1.02]\nset grid xtics ytics lt 1 lc rgb \"#e0e0e0\" lw 1\n" +
          gnuplot::key_above_plot();

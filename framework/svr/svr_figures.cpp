@@ -6,6 +6,8 @@
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/io/csv_format.hpp"
+#include "framework/report/figure_style.hpp"
+#include "framework/report/fit_axis_tics.hpp"
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/table_format.hpp"
 
@@ -32,6 +34,15 @@ std::string loop_csv(const SvrTestRow& row) {
   return out;
 }
 
+std::string loop_tics(const SvrTestRow& row) {
+  figure_script::Span u, y;
+  for (Eigen::Index k = row.scored_from; k < row.y.size(); ++k) {
+    u.add(row.u[k]);
+    for (double v : {row.y[k], row.y_svr[k]}) y.add(v);
+  }
+  return figure_script::xy_tics(u, y);
+}
+
 fs::path loop_figure(const fs::path& dir, const SvrExperiment& x, const SvrTestRow& row) {
   const std::string name = "loop_" + table::label_key(row.signal->label);
   write_file_atomic(dir / (name + ".csv"), loop_csv(row));
@@ -45,7 +56,7 @@ fs::path loop_figure(const fs::path& dir, const SvrExperiment& x, const SvrTestR
       "set datafile separator \",\"\n" + gnuplot::key_above_plot() + "set grid\n" +
       "set title " + gnuplot::quoted(row.signal->label) + " noenhanced\n" +
       "set xlabel " + gnuplot::quoted(axis("input", x.u_unit)) + " noenhanced\n" +
-      "set ylabel " + gnuplot::quoted(axis("output", x.y_unit)) + " noenhanced\n" +
+      "set ylabel " + gnuplot::quoted(axis("output", x.y_unit)) + " noenhanced\n" + loop_tics(row) +
       gnuplot::render_all_terminals(name, plot + "\n");
   return gnuplot::write_script(dir, name, text);
 }
@@ -60,6 +71,14 @@ std::string error_csv(const SvrResults& r) {
   return out;
 }
 
+// The signal names, turned 45°, span about 0.7 of their length each; wider
+// side by side than the plot, the figure takes the double column.
+bool many_signals(const SvrResults& r) {
+  double characters = 0;
+  for (const SvrTestRow& row : r.rows) characters += 0.7 * double(row.signal->label.size());  // turned 45°
+  return characters > gnuplot::characters_across();
+}
+
 fs::path error_figure(const fs::path& dir, const SvrExperiment& x, const SvrResults& r) {
   write_file_atomic(dir / "relative_error.csv", error_csv(r));
   std::string plot = "  plot \"relative_error.csv\" using 1:3:xtic(2) with linespoints lw 1.5 pt 7 lc rgb \"#d62728\" title \"SVR\"";
@@ -67,10 +86,10 @@ fs::path error_figure(const fs::path& dir, const SvrExperiment& x, const SvrResu
     plot += ", \\\n       \"relative_error.csv\" using 1:4 with linespoints lw 1.5 pt 5 lc rgb \"#1f77b4\" title \"grey-box\"";
   const std::string text = gnuplot::header("relative_error", "free-run relative error RE of each model by test signal",
                                            "relative_error.csv") +
-                           "set datafile separator \",\"\nset key top left\nset grid\n"
-                           "set xtics rotate by -45 noenhanced\nset ylabel \"RE (%)\"\nset logscale y\n" +
+                           "set datafile separator \",\"\n" + gnuplot::key_above_plot() + "set grid\n" +
+                           "set xtics rotate by 45 right noenhanced\nset ylabel \"RE (%)\"\nset logscale y\n" +
                            "set xrange [-0.5:" + gnuplot::number(double(r.rows.size()) - 0.5) + "]\n" +
-                           gnuplot::render_all_terminals("relative_error", plot + "\n");
+                           gnuplot::render_all_terminals("relative_error", plot + "\n", many_signals(r));
   return gnuplot::write_script(dir, "relative_error", text);
 }
 

@@ -7,6 +7,7 @@
 
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
+#include "framework/report/fit_axis_tics.hpp"
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/table_format.hpp"
 #include "framework/robust/linear_system.hpp"
@@ -24,17 +25,34 @@ std::size_t shown_controller(const TrackingExperiment& x) {
   return 0;
 }
 
-// Time from the window's start, reference, output, error, drive: at most 0.1 s
-// (one period at least) and 4000 points.
+// The time figures show at most 0.1 s of the window (one period at least).
+Eigen::Index shown_samples(const TrackingRow& row, double dt) {
+  const WindowSamples& w = row.run.window;
+  return std::min(w.end() - w.begin, std::max(w.boundary(1) - w.begin, Eigen::Index(std::lround(0.1 / dt))));
+}
+
+// Time from the window's start, reference, output, error, drive: at most
+// 4000 points.
 std::string time_csv(const TrackingRow& row, double dt) {
   const WindowSamples& w = row.run.window;
-  const Eigen::Index n = std::min(w.end() - w.begin, std::max(w.boundary(1) - w.begin, Eigen::Index(std::lround(0.1 / dt))));
+  const Eigen::Index n = shown_samples(row, dt);
   const Eigen::Index step = std::max<Eigen::Index>(1, n / 4000);
   std::string out = "t,reference,output,error,input\n";
   for (Eigen::Index k = w.begin; k < w.begin + n; k += step)
     out += gp::number(double(k - w.begin) * dt) + "," + gp::number(row.run.r[k]) + "," + gp::number(row.run.y[k]) +
            "," + gp::number(row.run.y[k] - row.run.r[k]) + "," + gp::number(row.run.u[k]) + "\n";
   return out;
+}
+
+std::string time_tics(const TrackingRow& row, double dt) {
+  const WindowSamples& w = row.run.window;
+  const Eigen::Index n = shown_samples(row, dt);
+  figure_script::Span t, y;
+  t.add(0.0);
+  t.add(double(n - 1) * dt);
+  for (Eigen::Index k = w.begin; k < w.begin + n; ++k)
+    for (double v : {row.run.r[k], row.run.y[k], row.run.y[k] - row.run.r[k]}) y.add(v);
+  return figure_script::xy_tics(t, y);
 }
 
 fs::path time_figure(const fs::path& dir, const TrackingExperiment& x, const TrackingRow& row) {
@@ -48,7 +66,7 @@ fs::path time_figure(const fs::path& dir, const TrackingExperiment& x, const Tra
   const std::string text =
       gp::header(name, "reference, output and error at " + row.reference->label + " with " + row.controller->label,
                  name + ".csv") +
-      "set datafile separator \",\"\nset key outside bottom center horizontal\nset grid\n" +
+      "set datafile separator \",\"\n" + gp::key_above_plot() + "set grid\n" + time_tics(row, x.sample_time) +
       "set title " + gp::quoted(row.reference->label + ", " + row.controller->label) + " noenhanced\n" +
       "set xlabel \"time in the scored window (s)\"\n" + "set ylabel " + gp::quoted("displacement" + unit) +
       " noenhanced\n" + gp::render_all_terminals(name, plot);
