@@ -10,7 +10,7 @@
 set encoding utf8
 set title "Runtime ECDF — demo (hammerstein(default.csv))"."\n"."fraction of 10 trials with best fitness <= 1.217e+04" noenhanced
 set xlabel "Function evaluations"
-set ylabel "Fraction of trials at the target"
+set ylabel "Share of trials at target"
 set logscale x
 set format x "10^{%L}"
 set autoscale xfix

@@ -12,9 +12,9 @@ output_label = "Output y [µm]"
 residual_label = "Residual\n" . "y − ŷ [µm]"
 
 do for [ext in "svg png pdf"] {
-  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
-  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
-  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "fit_DE_time.".ext
   set datafile separator whitespace
   set multiplot

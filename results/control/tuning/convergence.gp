@@ -17,11 +17,10 @@ set format x "10^{%L}"
 # The axis ends at the last evaluation rather than the next decade.
 set xrange [1:*]
 set autoscale xfixmax
-# Fitness axis from the data to 3x the highest median after 1 % of the budget.
-set yrange [*:0.01346062744]
+# The whole trace: the axis ends above the highest upper quartile.
+set yrange [*:0.009067089234]
 set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
-# Curves fall from the upper left, so the lower left stays free.
-set key bottom left opaque box spacing 1.2 samplen 2.5
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set style fill transparent solid 0.25 noborder
 
 do for [ext in "svg png pdf"] {

@@ -9,7 +9,7 @@
 set encoding utf8
 set title "Final fitness — time_to_quality (hammerstein(default.csv))"."\n"."box: quartiles, whiskers: 1.5 IQR, over 10 trials" noenhanced
 set ylabel "Final best fitness (SSE)"
-set xtics ("IPOP-CMA-ES" 1, "IPOP-CMA-ES+BOBYQA" 2, "IPOP-CMA-ES+LM" 3, "jSO+LM" 4, "L-SHADE+LM" 5, "AmFMMDE+LM" 6, "DE+LM" 7) noenhanced
+set xtics ("IPOP-CMA-ES" 1, "IPOP-CMA-ES+BOBYQA" 2, "IPOP-CMA-ES+LM" 3, "jSO+LM" 4, "L-SHADE+LM" 5, "AmFMMDE+LM" 6, "DE+LM" 7) noenhanced rotate by 45 right
 set xrange [0.4:7.6]
 set style fill solid 0.35 border
 set style boxplot outliers pointtype 7

@@ -10,14 +10,14 @@
 set encoding utf8
 set title "Runtime ECDF — time_to_quality (hammerstein(default.csv))"."\n"."fraction of 10 trials with best fitness <= 1.217e+04" noenhanced
 set xlabel "Function evaluations"
-set ylabel "Fraction of trials at the target"
+set ylabel "Share of trials at target"
 set logscale x
 set format x "10^{%L}"
 set autoscale xfix
 set offsets graph 0.05, graph 0.02, 0, 0
 set yrange [0:1.02]
 set grid xtics ytics lt 1 lc rgb "#e0e0e0" lw 1
-set key top left reverse Left opaque box spacing 1.2 samplen 2.5 width 1
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

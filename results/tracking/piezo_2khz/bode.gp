@@ -10,7 +10,7 @@ set encoding utf8
 set datafile separator ","
 set logscale x
 set grid
-set key bottom left
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }

@@ -8,8 +8,10 @@
 
 set encoding utf8
 set datafile separator ","
-set key outside bottom center horizontal
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
+set xtics 0.05
+set ytics 2
 set title "5 Hz, 2DOF Hinf (3rd order)" noenhanced
 set xlabel "time in the scored window (s)"
 set ylabel "displacement (µm)" noenhanced

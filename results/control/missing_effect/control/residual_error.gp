@@ -8,15 +8,15 @@
 
 set encoding utf8
 set datafile separator ","
-set key outside right top
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
 set xlabel "time (s)"
 set ylabel "residual RMS (dB)"
 
 do for [ext in "svg png pdf"] {
-  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
-  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
-  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "residual_error.".ext
   plot "traces.csv" using 1:2 with lines lw 1.5 lt 1 dt 1 title "uncontrolled" noenhanced, \
        "traces.csv" using 1:5 with lines lw 1.5 lt 2 dt 1 title "FxNLMS, Ŝ = true actuator" noenhanced, \
