@@ -8,11 +8,13 @@
 
 set encoding utf8
 set datafile separator ","
-set key top left
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
 set title "test_multisine.csv" noenhanced
 set xlabel "input (N)" noenhanced
 set ylabel "output (m)" noenhanced
+set xtics 100
+set ytics 0.001
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

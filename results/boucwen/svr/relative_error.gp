@@ -8,9 +8,9 @@
 
 set encoding utf8
 set datafile separator ","
-set key top left
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
-set xtics rotate by -45 noenhanced
+set xtics rotate by 45 right noenhanced
 set ylabel "RE (%)"
 set logscale y
 set xrange [-0.5:1.5]
