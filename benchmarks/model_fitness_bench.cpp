@@ -120,4 +120,22 @@ BENCHMARK_CAPTURE(BM_ModelProblem, feedback_batched, true, kFeedback, &kFeedback
     ->Name("BM_FeedbackModelProblemBatched")
     ->Apply(feedback_size);
 
+// The effects batched last (backlash, saturation, second_mode) in one chain
+// with the seed chain: before they had lanes, any of them sent a model down
+// the one-candidate path.
+const Active kWiderChain = {{"backlash.r", 0.05},          {"hysteresis.A", 0.3},
+                            {"asymmetry.d2", 0.05},        {"saturation.lambda", 0.2},     {"msd.period", 0.02},
+                            {"second_mode.participation", 0.1}, {"arx.a1", -0.5},
+                            {"arx.b1", 0.1}};
+constexpr const char* kWider = "backlash,hysteresis,asymmetry,saturation,msd,second_mode,arx";
+void wider_size(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"N", "P", "threads"})->Args({10000, 32, 1})->UseRealTime()->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK_CAPTURE(BM_ModelProblem, wider_scalar, false, kWider, &kWiderChain)
+    ->Name("BM_WiderModelProblemScalar")
+    ->Apply(wider_size);
+BENCHMARK_CAPTURE(BM_ModelProblem, wider_batched, true, kWider, &kWiderChain)
+    ->Name("BM_WiderModelProblemBatched")
+    ->Apply(wider_size);
+
 }  // namespace

@@ -35,8 +35,10 @@ void expect_bit_identical(const std::string& effects, int samples = 3000, InputH
 }
 
 TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
-  for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "creep", "offset", "drift",
-                              "hysteresis,asymmetry,msd,arx", "hysteresis,asymmetry,msd,arx,creep,offset,drift"})
+  for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "creep", "offset", "drift", "backlash",
+                              "saturation", "second_mode", "hysteresis,asymmetry,msd,arx",
+                              "hysteresis,asymmetry,msd,arx,creep,offset,drift",
+                              "backlash,hysteresis,asymmetry,saturation,msd,second_mode"})
     expect_bit_identical(effects);
 }
 
@@ -117,7 +119,7 @@ TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
 }
 
 TEST(EffectLanes, AModelWithAnEffectWithoutABatchedFormEvaluatesOneCandidateAtATime) {
-  const Model model = Model::parse("hysteresis,msd,backlash");
+  const Model model = Model::parse("hysteresis,msd,delay");
   const ModelData data = lane_record();
   const ModelProblem problem(model, data);
   EXPECT_FALSE(problem.batched());

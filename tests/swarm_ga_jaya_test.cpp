@@ -83,18 +83,22 @@ TEST(SwarmGaJaya, GaApproachesTheSphereOptimumSlowly) {
 }
 
 TEST(SwarmGaJaya, GaWithPlusReplacementConvergesFurther) {
-  // Pooling parents and children and keeping the best N (pagmo's sga
-  // reinsertion) keeps the mutation noise out of the population: the same
-  // operators, experiment and trials as the test above end about fifteen
-  // times lower. Measured best values, trials 0-4: 1.8e-4, 5.5e-4, 7.3e-4,
-  // 1.0e-3, 1.3e-3 (median 7.3e-4, against 1.1e-2 for generational).
+  // Plus replacement is pagmo's sga: parents and children pooled, the best N
+  // kept, and sga's polynomial mutation, which steps towards a bound by a
+  // share of the distance to it. Pooling keeps the mutation noise out of the
+  // population, the shorter steps near the optimum do the rest: the same
+  // experiment and trials as the test above end about a hundred times lower.
+  // Measured best values of trials 0-4, sorted: 4.3e-5, 8.5e-5, 1.1e-4,
+  // 1.3e-4, 2.4e-4 (median 1.1e-4; with the NSGA-II mutation of the
+  // generational GA the median is about 4e-4, and pagmo's sga reaches 1.3e-4
+  // over 30 trials, results/performance/peer.md).
   FunctionProblem sphere("sphere", 10);
   const Algorithm ga{"ga", {{"replacement", "plus"}}};
   std::vector<double> best;
   for (long trial = 0; trial < 5; ++trial) best.push_back(run(sphere, ga, 50000, trial).best);
   std::sort(best.begin(), best.end());
-  EXPECT_LT(best[2], 2e-3);
-  EXPECT_LT(best[4], 1e-2);
+  EXPECT_LT(best[2], 3e-4);
+  EXPECT_LT(best[4], 1e-3);
 }
 
 TEST(SwarmGaJaya, ImproveOnRastrigin) {
@@ -235,6 +239,44 @@ TEST(RealCodedOperators, PolynomialMutationMatchesTheFormula) {
   const double dq = r < 0.5 ? std::pow(2 * r + (1 - 2 * r) * std::pow(0.75, 21.0), m) - 1
                             : 1 - std::pow(2 * (1 - r) + 2 * (r - 0.5) * std::pow(0.25, 21.0), m);
   EXPECT_DOUBLE_EQ(y[0], 0.25 + dq);
+}
+
+TEST(RealCodedOperators, PolynomialMutationToBoundMatchesTheFormula) {
+  // y = 0.25 in [0, 1], eta 20, as pagmo's sga: with r <= 0.5 the step is
+  // ((2r)^(1/21) - 1) * (y - 0), else (1 - (2(1 - r))^(1/21)) * (1 - y).
+  const Bounds b = box(0.0, 1.0, 1);
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    Rng rng(seed), copy(seed);
+    Eigen::VectorXd y = Eigen::VectorXd::Constant(1, 0.25);
+    polynomial_mutation_to_bound(y, b, 1.0, 20.0, rng);
+    copy.uniform();  // the p_m draw
+    const double r = copy.uniform(), m = 1 / 21.0;
+    const double step = r <= 0.5 ? (std::pow(2 * r, m) - 1) * 0.25 : (1 - std::pow(2 * (1 - r), m)) * 0.75;
+    EXPECT_DOUBLE_EQ(y[0], 0.25 + step) << "seed " << seed;
+  }
+}
+
+// In the middle of the box [-100, 100] the to-bound form scales delta by 100,
+// the NSGA-II form by the width 200: with eta 20 the median |step| is
+// 100 (1 - 0.5^(1/21)) = 3.247 against twice that.
+TEST(RealCodedOperators, PolynomialMutationToBoundTakesHalfTheStepsInTheMiddle) {
+  const Bounds b = box(-100.0, 100.0, 1);
+  Rng rng(9);
+  std::vector<double> to_bound, nsga2;
+  for (int t = 0; t < 20001; ++t) {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(1), z = Eigen::VectorXd::Zero(1);
+    polynomial_mutation_to_bound(y, b, 1.0, 20.0, rng);
+    polynomial_mutation(z, b, 1.0, 20.0, rng);
+    to_bound.push_back(std::abs(y[0]));
+    nsga2.push_back(std::abs(z[0]));
+  }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double expected = 100 * (1 - std::pow(0.5, 1 / 21.0));
+  EXPECT_NEAR(median(to_bound), expected, 0.03 * expected);
+  EXPECT_NEAR(median(nsga2), 2 * expected, 0.06 * expected);
 }
 
 TEST(RealCodedOperators, TournamentPicksTheBestAndBreaksTiesAtRandom) {

@@ -36,8 +36,9 @@ std::vector<PeerRow> ga_replacement_rows(long evaluations, long trials, std::uin
   const auto problem = make_problem(e.problem, e.base_dir);
   const BoxFitness box = box_fitness(*problem);
   const std::string budget = std::to_string(evaluations) + " evaluations";
-  const std::string operators = ", SBX, polynomial mutation, binary tournament";
-  const char* settings[] = {"NP 100, generational, 2 elites", "NP 100, plus (best N of parents and children)"};
+  const std::string operators = ", SBX, binary tournament";
+  const char* settings[] = {"NP 100, generational, 2 elites, polynomial mutation (NSGA-II form)",
+                            "NP 100, plus (best N of parents and children), polynomial mutation (sga's form)"};
   std::vector<PeerRow> rows;
   std::vector<PeerTrial> theirs;
   std::vector<std::vector<PeerTrial>> ours(2);
@@ -51,7 +52,7 @@ std::vector<PeerRow> ga_replacement_rows(long evaluations, long trials, std::uin
     rows.push_back(summarise({"ga replacement", "hystbench", "ga", settings[a] + operators, budget},
                              ours[a], 1.0));
   rows.push_back(summarise({"ga replacement", "pagmo", "sga",
-                            "NP 100, (mu + lambda) reinsertion" + operators, budget},
+                            "NP 100, (mu + lambda) reinsertion, polynomial mutation" + operators, budget},
                            theirs, 1.0));
   return rows;
 }

@@ -34,7 +34,7 @@ RealCrossover real_crossover_from_string(const std::string& name) {
 }
 
 const std::vector<std::string>& real_mutation_names() {
-  static const std::vector<std::string> names{"polynomial", "gaussian"};
+  static const std::vector<std::string> names{"polynomial", "polynomial-to-bound", "gaussian"};
   return names;
 }
 
@@ -119,6 +119,22 @@ void polynomial_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, do
       dq = 1.0 - std::pow(2.0 * (1.0 - r) + 2.0 * (r - 0.5) * std::pow(1.0 - d2, eta + 1.0), m);
     }
     y[j] = std::clamp(y[j] + dq * width, lo, hi);
+  }
+}
+
+void polynomial_mutation_to_bound(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
+                                  double eta, Rng& rng) {
+  const double m = 1.0 / (eta + 1.0);
+  for (Eigen::Index j = 0; j < y.size(); ++j) {
+    if (rng.uniform() >= pm) continue;
+    const double lo = bounds.lower[j], hi = bounds.upper[j];
+    if (!(hi > lo)) continue;
+    const double r = rng.uniform();
+    if (r <= 0.5)
+      y[j] += (std::pow(2.0 * r, m) - 1.0) * (y[j] - lo);  // towards the lower bound
+    else
+      y[j] += (1.0 - std::pow(2.0 * (1.0 - r), m)) * (hi - y[j]);  // towards the upper one
+    y[j] = std::clamp(y[j], lo, hi);
   }
 }
 

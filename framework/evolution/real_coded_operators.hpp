@@ -17,11 +17,11 @@ namespace hystbench {
 using ChildPair = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
 
 enum class RealCrossover { Sbx, BlxAlpha, Arithmetic };
-enum class RealMutation { Polynomial, Gaussian };
+enum class RealMutation { Polynomial, PolynomialToBound, Gaussian };
 
 const std::vector<std::string>& real_crossover_names();  // "sbx", "blx-alpha", "arithmetic"
 RealCrossover real_crossover_from_string(const std::string& name);
-const std::vector<std::string>& real_mutation_names();  // "polynomial", "gaussian"
+const std::vector<std::string>& real_mutation_names();  // "polynomial", "polynomial-to-bound", "gaussian"
 RealMutation real_mutation_from_string(const std::string& name);
 
 // Index of the winner of a tournament among `size` distinct members drawn
@@ -46,6 +46,12 @@ ChildPair arithmetic_crossover(const Eigen::VectorXd& y1, const Eigen::VectorXd&
 // probability pm (docs/algorithms.md#polynomial-mutation).
 void polynomial_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
                          double eta, Rng& rng);
+// Polynomial mutation as pagmo2's sga applies it: the same distribution of
+// delta with index eta, but scaled by the distance from y_j to the bound it
+// moves towards instead of the box width (docs/algorithms.md#polynomial-mutation).
+// Near the middle of the box its steps are half as long.
+void polynomial_mutation_to_bound(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,
+                                  double eta, Rng& rng);
 // y_j += N(0, sigma (u_j - l_j)) with probability pm per component, then
 // clipped (docs/algorithms.md#alternative-operators).
 void gaussian_mutation(Eigen::Ref<Eigen::VectorXd> y, const Bounds& bounds, double pm,

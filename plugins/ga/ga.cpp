@@ -5,9 +5,11 @@
 // (probability p_c) and mutation and evaluates them in one batch. Generational
 // replacement breeds N - E and keeps them with the E best members of the old
 // population; "plus" replacement breeds N, pools them with the parents and
-// keeps the best N (the (mu + lambda) reinsertion of pagmo's sga). The bounded
-// operators keep every child inside the box, so no repair is needed.
+// keeps the best N (the (mu + lambda) reinsertion of pagmo's sga), and by
+// default mutates as sga does. The bounded operators keep every child inside
+// the box, so no repair is needed.
 #include <string>
+#include <vector>
 
 #include "framework/core/error.hpp"
 #include "framework/core/registry.hpp"
@@ -31,8 +33,9 @@ class GeneticAlgorithm : public Optimizer {
             "T. Meyarivan, A fast and elitist multiobjective genetic algorithm: NSGA-II, IEEE "
             "TEC 6(2):182-197, 2002 (bounded operators, defaults). L. J. Eshelman, "
             "J. D. Schaffer, Real-coded genetic algorithms and interval-schemata, FOGA 2, 1993 "
-            "(BLX-alpha). RESOLUTION: the single-objective configuration is this project's "
-            "choice (docs/algorithms.md#ga).",
+            "(BLX-alpha). F. Biscani, D. Izzo, pagmo2, sga in src/algorithms/sga.cpp (the "
+            "to-bound polynomial mutation and plus reinsertion). RESOLUTION: the single-objective "
+            "configuration is this project's choice (docs/algorithms.md#ga).",
             {ParamSpec::integer("np", 100, 4, 100000,
                                 "population size N; each generation breeds N - elites offspring"),
              ParamSpec::choice("replacement", "generational", {"generational", "plus"},
@@ -47,8 +50,9 @@ class GeneticAlgorithm : public Optimizer {
              ParamSpec::real("pc", 0.9, 0.0, 1.0, "crossover probability per pair of parents"),
              ParamSpec::real("eta_c", 20.0, 0.0, 1000.0, "SBX distribution index"),
              ParamSpec::real("blx_alpha", 0.5, 0.0, 10.0, "BLX-alpha widening of the interval"),
-             ParamSpec::choice("mutation", "polynomial", real_mutation_names(),
-                               "mutation operator"),
+             ParamSpec::choice("mutation", "auto", mutation_choices(),
+                               "mutation operator; auto = polynomial with generational "
+                               "replacement, polynomial-to-bound (pagmo's sga) with plus"),
              ParamSpec::real("pm", nullptr, 0.0, 1.0,
                              "mutation probability per variable; auto = 1 / dimension"),
              ParamSpec::real("eta_m", 20.0, 0.0, 1000.0, "polynomial mutation distribution index"),
@@ -62,7 +66,7 @@ class GeneticAlgorithm : public Optimizer {
         elites_(p.integer("elites")),
         tournament_(p.integer("tournament")),
         crossover_(real_crossover_from_string(p.text("crossover"))),
-        mutation_(real_mutation_from_string(p.text("mutation"))),
+        mutation_(mutation_from(p)),
         pc_(p.real("pc")),
         eta_c_(p.real("eta_c")),
         blx_alpha_(p.real("blx_alpha")),
@@ -120,10 +124,26 @@ class GeneticAlgorithm : public Optimizer {
   }
 
   void mutate(Eigen::VectorXd& y, const Bounds& bounds, double pm, Rng& rng) const {
-    if (mutation_ == RealMutation::Polynomial)
-      polynomial_mutation(y, bounds, pm, eta_m_, rng);
-    else
-      gaussian_mutation(y, bounds, pm, sigma_m_, rng);
+    switch (mutation_) {
+      case RealMutation::Polynomial: return polynomial_mutation(y, bounds, pm, eta_m_, rng);
+      case RealMutation::PolynomialToBound: return polynomial_mutation_to_bound(y, bounds, pm, eta_m_, rng);
+      case RealMutation::Gaussian: return gaussian_mutation(y, bounds, pm, sigma_m_, rng);
+    }
+  }
+
+  static std::vector<std::string> mutation_choices() {
+    std::vector<std::string> names{"auto"};
+    for (const auto& n : real_mutation_names()) names.push_back(n);
+    return names;
+  }
+
+  // With plus replacement the GA is pagmo's sga, whose polynomial mutation
+  // steps towards a bound by a share of the distance to it; generational
+  // replacement keeps the NSGA-II form it was tuned with.
+  static RealMutation mutation_from(const Params& p) {
+    const std::string name = p.text("mutation");
+    if (name != "auto") return real_mutation_from_string(name);
+    return p.text("replacement") == "plus" ? RealMutation::PolynomialToBound : RealMutation::Polynomial;
   }
 
   void survive(Eigen::MatrixXd& X, Eigen::VectorXd& fx, const Eigen::MatrixXd& Y,

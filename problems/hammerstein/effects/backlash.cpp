@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace hystbench {
@@ -23,7 +23,7 @@ SignatureValue direction_correlation(const ResidualView& r) {
   return {correlation(r.e, direction_of_motion(r.u))};
 }
 
-class Backlash : public Effect {
+class Backlash : public KernelEffect<Backlash, 1, EffectDrive::None> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -45,35 +45,30 @@ class Backlash : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext&,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const EffectSetup s = setup(p);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    State state;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) signal[k] = sample(p[0], state, signal[k]);
-    return true;
+  // c = (r).
+  static EffectSetup setup(std::span<const double> p, double /*Ts*/, std::array<double, 1>& c) {
+    c = {p[0]};
+    if (!std::isfinite(c[0]) || c[0] < 0.0) return EffectSetup::Invalid;
+    return c[0] == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
   }
 
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
-    return stepper_for(setup(p), [r = p[0]] {
-      return kernel_stepper<State>([r](State& state, double v, double) { return sample(r, state, v); });
-    });
-  }
-
- private:
-  static EffectSetup setup(std::span<const double> p) {
-    const double r = p[0];
-    if (!std::isfinite(r) || r < 0.0) return EffectSetup::Invalid;
-    return r == 0.0 ? EffectSetup::PassThrough : EffectSetup::Run;
-  }
-
+  template <class V>
   struct State {
-    double f = 0.0;  // F[-1] = 0
+    V f{};  // F[-1] = 0
   };
 
-  // One sample of the play operator, shared by the batch and streaming forms.
-  static double sample(double r, State& state, double v) {
-    state.f = std::max(v - r, std::min(v + r, state.f));
+  // One sample: F = max(v − r, min(v + r, F)), with the comparisons of
+  // std::min and std::max, so that a lane gives what one candidate does.
+  template <class V>
+  static V sample(const std::array<V, 1>& c, NoAux, State<V>& state, V v, double) {
+    const V upper = v + c[0], lower = v - c[0];
+    const V below = state.f < upper ? state.f : upper;  // std::min(upper, f)
+    state.f = lower < below ? below : lower;             // std::max(lower, below)
+    return state.f;
+  }
+
+  template <class V>
+  static V health(const std::array<V, 1>&, const State<V>& state) {
     return state.f;
   }
 };

@@ -13,7 +13,7 @@
 // Units: lambda in 1/y².
 #include <cmath>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace hystbench {
@@ -37,7 +37,7 @@ SignatureValue top_bin_error_share(const ResidualView& r) {
   return {sse_share / sample_share, {{"sse_share", sse_share}, {"sample_share", sample_share}}};
 }
 
-class Saturation : public Effect {
+class Saturation : public KernelEffect<Saturation, 2, EffectDrive::None> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -62,36 +62,25 @@ class Saturation : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext&,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    Limit c;
-    const EffectSetup s = setup(p, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    signal.array() = c.limit * (c.inverse * signal.array()).tanh();
-    return true;
-  }
-
-  // Eigen's tanh and std::tanh may differ in the last bit: the stream
-  // matches the batch form to rounding, not bit for bit.
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
-    Limit c;
-    return stepper_for(setup(p, c), [&] {
-      return kernel_stepper<Stateless>(
-          [c](Stateless&, double signal, double) { return c.limit * std::tanh(c.inverse * signal); });
-    });
-  }
-
- private:
-  struct Limit {
-    double inverse, limit;  // 1/L, L
-  };
-  static EffectSetup setup(std::span<const double> p, Limit& c) {
+  // c = (1/L, L).
+  static EffectSetup setup(std::span<const double> p, double /*Ts*/, std::array<double, 2>& c) {
     const double lambda = p[0];
     if (!std::isfinite(lambda) || lambda < 0.0) return EffectSetup::Invalid;
     if (lambda == 0.0) return EffectSetup::PassThrough;
-    c.inverse = std::sqrt(lambda);
-    c.limit = 1.0 / c.inverse;
-    return std::isfinite(c.limit) ? EffectSetup::Run : EffectSetup::Invalid;
+    c = {std::sqrt(lambda), 0.0};
+    c[1] = 1.0 / c[0];
+    return std::isfinite(c[1]) ? EffectSetup::Run : EffectSetup::Invalid;
+  }
+
+  template <class V>
+  static V sample(const std::array<V, 2>& c, NoAux, State<V>&, V signal, double) {
+    return c[1] * lane_tanh(c[0] * signal);
+  }
+
+  // Stateless: nothing can diverge.
+  template <class V>
+  static V health(const std::array<V, 2>&, const State<V>&) {
+    return V{};
   }
 };
 

@@ -19,7 +19,7 @@
 #include <numbers>
 #include <vector>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/spectrum.hpp"
 #include "problems/hammerstein/effects/biquad.hpp"
 
@@ -66,7 +66,7 @@ SignatureValue residual_spectral_peak(const ResidualView& r) {
            {"band", input.frequency[begin - 1]}}};
 }
 
-class SecondMode : public Effect {
+class SecondMode : public KernelEffect<SecondMode, 4, EffectDrive::StageInput> {
  public:
   static EffectInfo info() {
     EffectInfo i;
@@ -93,32 +93,8 @@ class SecondMode : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    Mode c;
-    const EffectSetup s = setup(p, ctx.sample_time, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    if (!ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    const double* w = ctx.stage_input->data();
-    State state;
-    for (Eigen::Index k = 0; k < signal.size(); ++k) signal[k] = sample(c, state, signal[k], w[k]);
-    return std::isfinite(state.m1);
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
-    Mode c;
-    return stepper_for(setup(p, ctx.sample_time, c), [&] {
-      return kernel_stepper<State>(
-          [c](State& state, double signal, double w) { return sample(c, state, signal, w); });
-    });
-  }
-
- private:
-  // The participation g and H2(z) = b·(1, 2, 1) / (1, a1, a2).
-  struct Mode {
-    double g, b, a1, a2;
-  };
-  static EffectSetup setup(std::span<const double> p, double Ts, Mode& c) {
+  // c = (g, b, a1, a2): the participation g and H2(z) = b·(1, 2, 1) / (1, a1, a2).
+  static EffectSetup setup(std::span<const double> p, double Ts, std::array<double, 4>& c) {
     const double g = p[0], log10_f = p[1], zeta = p[2];
     if (!std::isfinite(g) || !std::isfinite(log10_f) || !std::isfinite(zeta)) return EffectSetup::Invalid;
     if (g == 0.0) return EffectSetup::PassThrough;
@@ -127,24 +103,31 @@ class SecondMode : public Effect {
     const double omega = 2.0 * std::numbers::pi * std::pow(10.0, log10_f);
     const auto [k2, q, a0] = tustin_resonance(2.0 / (omega * Ts), zeta);
     c = {g, 1.0 / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
-    if (!std::isfinite(c.a1) || !std::isfinite(c.a2) || !(c.b > 0.0)) return EffectSetup::Invalid;
+    if (!std::isfinite(c[2]) || !std::isfinite(c[3]) || !(c[1] > 0.0)) return EffectSetup::Invalid;
     return EffectSetup::Run;
   }
 
   // H2 at rest: w[k<0] = m[k<0] = 0.
+  template <class V>
   struct State {
-    double w1 = 0.0, w2 = 0.0, m1 = 0.0, m2 = 0.0;
+    V w1{}, w2{}, m1{}, m2{};
   };
 
-  // One sample, shared by the batch and streaming forms: the second mode's
-  // response m to the stage input w, mixed in with share g.
-  static double sample(const Mode& c, State& state, double signal, double w) {
-    const double m = (c.b * ((w + 2.0 * state.w1) + state.w2) - c.a2 * state.m2) - c.a1 * state.m1;
+  // One sample: the second mode's response m to the stage input w, mixed in
+  // with share g.
+  template <class V>
+  static V sample(const std::array<V, 4>& c, NoAux, State<V>& state, V signal, V w) {
+    const V m = (c[1] * ((w + 2.0 * state.w1) + state.w2) - c[3] * state.m2) - c[2] * state.m1;
     state.w2 = state.w1;
     state.w1 = w;
     state.m2 = state.m1;
     state.m1 = m;
-    return signal + c.g * (m - signal);
+    return signal + c[0] * (m - signal);
+  }
+
+  template <class V>
+  static V health(const std::array<V, 4>&, const State<V>& state) {
+    return state.m1;
   }
 };
 
