@@ -137,5 +137,16 @@ BENCHMARK_CAPTURE(BM_ModelProblem, wider_scalar, false, kWider, &kWiderChain)
 BENCHMARK_CAPTURE(BM_ModelProblem, wider_batched, true, kWider, &kWiderChain)
     ->Name("BM_WiderModelProblemBatched")
     ->Apply(wider_size);
+// A delay (each lane its own lag, read from the block's kept inputs) before
+// the seed chain, the slowest hidden-effect cases' model.
+const Active kDelayChain = {{"delay.d", 2.5},        {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05},
+                            {"msd.period", 0.02}};
+constexpr const char* kDelay = "delay,hysteresis,asymmetry,msd";
+BENCHMARK_CAPTURE(BM_ModelProblem, delay_scalar, false, kDelay, &kDelayChain)
+    ->Name("BM_DelayModelProblemScalar")
+    ->Apply(wider_size);
+BENCHMARK_CAPTURE(BM_ModelProblem, delay_batched, true, kDelay, &kDelayChain)
+    ->Name("BM_DelayModelProblemBatched")
+    ->Apply(wider_size);
 
 }  // namespace

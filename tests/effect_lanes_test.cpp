@@ -36,9 +36,10 @@ void expect_bit_identical(const std::string& effects, int samples = 3000, InputH
 
 TEST(EffectLanes, BlocksGiveExactlyTheOneCandidateValues) {
   for (const char* effects : {"hysteresis", "asymmetry", "msd", "arx", "creep", "offset", "drift", "backlash",
-                              "saturation", "second_mode", "hysteresis,asymmetry,msd,arx",
+                              "saturation", "second_mode", "delay", "hysteresis,asymmetry,msd,arx",
                               "hysteresis,asymmetry,msd,arx,creep,offset,drift",
-                              "backlash,hysteresis,asymmetry,saturation,msd,second_mode"})
+                              "backlash,hysteresis,asymmetry,saturation,msd,second_mode",
+                              "delay,hysteresis,asymmetry,msd"})
     expect_bit_identical(effects);
 }
 
@@ -116,17 +117,6 @@ TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
   EXPECT_EQ(f[5], problem.sse(X.col(5)));
   for (int j : {0, 1, 3, 4, 6, 7}) EXPECT_EQ(f[j], problem.sse(X.col(j)));
   EXPECT_TRUE(std::isfinite(f[0]));
-}
-
-TEST(EffectLanes, AModelWithAnEffectWithoutABatchedFormEvaluatesOneCandidateAtATime) {
-  const Model model = Model::parse("hysteresis,msd,delay");
-  const ModelData data = lane_record();
-  const ModelProblem problem(model, data);
-  EXPECT_FALSE(problem.batched());
-  const Eigen::MatrixXd X = lane_candidates(model, 5, 3);
-  Eigen::VectorXd f(5);
-  problem.evaluate(X, f);
-  for (Eigen::Index j = 0; j < 5; ++j) EXPECT_EQ(f[j], problem.sse(X.col(j)));
 }
 
 }  // namespace

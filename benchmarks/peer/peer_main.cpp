@@ -28,7 +28,7 @@ struct Options {
   int threads = static_cast<int>(std::thread::hardware_concurrency());
   long overhead_evaluations = 200000;
   long ga_evaluations = 50000;
-  long ga_trials = 11;
+  long ga_trials = 30;
   std::string out = "results/performance";
 };
 

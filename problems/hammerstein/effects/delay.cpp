@@ -18,7 +18,9 @@
 // a delay fitted at one sample rate means a different time at another.
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <deque>
+#include <vector>
 
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
@@ -87,6 +89,20 @@ class Delay : public Effect {
     return true;
   }
 
+  // Each lane has a delay of its own, so the block keeps the inputs seen so
+  // far and every lane reads them at its own lag, through the same combine()
+  // as apply().
+  bool has_lanes() const override { return true; }
+  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, const LaneContext&, LaneMask& ok) const override {
+    auto run = std::make_unique<DelayLanes>();
+    for (int l = 0; l < kEffectLanes; ++l) {
+      const EffectSetup s = setup(p[l], run->weights[l]);
+      run->running[l] = s == EffectSetup::Run;
+      if (s == EffectSetup::Invalid) ok[l] = false;
+    }
+    return run;
+  }
+
   std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext&) const override {
     Weights c;
     return stepper_for(setup(p, c), [&] {
@@ -142,6 +158,31 @@ class Delay : public Effect {
     double at(Eigen::Index j) const {
       return j >= 0 ? v[std::size_t(j - (count - Eigen::Index(v.size())))] : 0.0;
     }
+  };
+
+  class DelayLanes final : public LaneRun {
+   public:
+    std::array<Weights, kEffectLanes> weights{};
+    LaneMask running{};
+
+    void run(std::span<LaneVector> signal, const LaneChunk& chunk) override {
+      past_.insert(past_.end(), signal.begin(), signal.end());
+      for (int l = 0; l < kEffectLanes; ++l) {
+        if (!running[l]) continue;
+        const Weights& c = weights[l];
+        for (std::size_t i = 0; i < signal.size(); ++i) {
+          const Eigen::Index j = chunk.begin + Eigen::Index(i) - c.n;  // k − n
+          signal[i][l] = c.integer ? at(j, l) : combine(c, at(j - 2, l), at(j - 1, l), at(j, l), at(j + c.ahead, l));
+        }
+      }
+    }
+    void finish(LaneMask&) const override {}
+    bool reads_stage_input() const override { return false; }
+
+   private:
+    // Input j of lane l, 0 before the record.
+    double at(Eigen::Index j, int l) const { return j >= 0 ? past_[std::size_t(j)][l] : 0.0; }
+    std::vector<LaneVector> past_;  // every input of the block so far
   };
 
   static double sample(const Weights& c, History& h, double v) {
