@@ -120,33 +120,36 @@ BENCHMARK_CAPTURE(BM_ModelProblem, feedback_batched, true, kFeedback, &kFeedback
     ->Name("BM_FeedbackModelProblemBatched")
     ->Apply(feedback_size);
 
-// The effects batched last (backlash, saturation, second_mode) in one chain
-// with the seed chain: before they had lanes, any of them sent a model down
-// the one-candidate path.
-const Active kWiderChain = {{"backlash.r", 0.05},          {"hysteresis.A", 0.3},
-                            {"asymmetry.d2", 0.05},        {"saturation.lambda", 0.2},     {"msd.period", 0.02},
-                            {"second_mode.participation", 0.1}, {"arx.a1", -0.5},
-                            {"arx.b1", 0.1}};
-constexpr const char* kWider = "backlash,hysteresis,asymmetry,saturation,msd,second_mode,arx";
-void wider_size(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"N", "P", "threads"})->Args({10000, 32, 1})->UseRealTime()->Unit(benchmark::kMicrosecond);
+// Chains of the effects batched last, each run one candidate at a time
+// (BM_NAMEModelProblemScalar) and in blocks (BM_NAMEModelProblemBatched) at
+// N = 10 000, 32 candidates, one thread.
+struct Chain {
+  const char* name;
+  const char* effects;
+  Active active;
+};
+const std::vector<Chain>& later_batched_chains() {
+  static const std::vector<Chain> chains{
+      // backlash, saturation and second_mode with the seed chain
+      {"Wider", "backlash,hysteresis,asymmetry,saturation,msd,second_mode,arx",
+       {{"backlash.r", 0.05}, {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05}, {"saturation.lambda", 0.2},
+        {"msd.period", 0.02}, {"second_mode.participation", 0.1}, {"arx.a1", -0.5}, {"arx.b1", 0.1}}},
+      // a delay (each lane its own lag) before it: the slowest hidden-effect cases' model
+      {"Delay", "delay,hysteresis,asymmetry,msd",
+       {{"delay.d", 2.5}, {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05}, {"msd.period", 0.02}}}};
+  return chains;
 }
-BENCHMARK_CAPTURE(BM_ModelProblem, wider_scalar, false, kWider, &kWiderChain)
-    ->Name("BM_WiderModelProblemScalar")
-    ->Apply(wider_size);
-BENCHMARK_CAPTURE(BM_ModelProblem, wider_batched, true, kWider, &kWiderChain)
-    ->Name("BM_WiderModelProblemBatched")
-    ->Apply(wider_size);
-// A delay (each lane its own lag, read from the block's kept inputs) before
-// the seed chain, the slowest hidden-effect cases' model.
-const Active kDelayChain = {{"delay.d", 2.5},        {"hysteresis.A", 0.3}, {"asymmetry.d2", 0.05},
-                            {"msd.period", 0.02}};
-constexpr const char* kDelay = "delay,hysteresis,asymmetry,msd";
-BENCHMARK_CAPTURE(BM_ModelProblem, delay_scalar, false, kDelay, &kDelayChain)
-    ->Name("BM_DelayModelProblemScalar")
-    ->Apply(wider_size);
-BENCHMARK_CAPTURE(BM_ModelProblem, delay_batched, true, kDelay, &kDelayChain)
-    ->Name("BM_DelayModelProblemBatched")
-    ->Apply(wider_size);
+const bool kLaterChainsRegistered = [] {
+  for (const Chain& c : later_batched_chains())
+    for (const bool batched : {false, true})
+      benchmark::RegisterBenchmark(
+          ("BM_" + std::string(c.name) + "ModelProblem" + (batched ? "Batched" : "Scalar")).c_str(),
+          BM_ModelProblem, batched, c.effects, &c.active)
+          ->ArgNames({"N", "P", "threads"})
+          ->Args({10000, 32, 1})
+          ->UseRealTime()
+          ->Unit(benchmark::kMicrosecond);
+  return true;
+}();
 
 }  // namespace
