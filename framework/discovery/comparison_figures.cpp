@@ -7,7 +7,7 @@
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/figure_style.hpp"
-#include "framework/report/fit_axis_tics.hpp"
+#include "framework/report/axis_tics.hpp"
 #include "framework/report/gnuplot_script.hpp"
 
 namespace hystbench {
@@ -62,6 +62,7 @@ std::vector<std::pair<double, double>> heldout_spans(const ComparisonInput& in) 
 // of the name two runs back, which shares its row (names alternate rows).
 bool names_fit(const ComparisonInput& in, const std::vector<SegmentRun>& runs) {
   const double t0 = in.t[0], span = in.t[in.t.size() - 1] - t0;
+  if (!(span > 0)) return false;
   const double character = 1.0 / gp::characters_across();  // as a share of the width
   std::vector<std::pair<double, double>> extent;             // left and right edge of each name
   for (const auto& run : runs) {
@@ -72,7 +73,7 @@ bool names_fit(const ComparisonInput& in, const std::vector<SegmentRun>& runs) {
     if (extent[k].first < 0 || extent[k].second > 1 || (k >= 2 && extent[k - 2].second > extent[k].first))
       return false;
   }
-  return span > 0;
+  return true;
 }
 
 std::string residual_marks(const ComparisonInput& in) {
@@ -163,9 +164,9 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Co
   }
   if (segs.empty())
     data += "0 \"all\" " + gp::number(m.parts.all.rmse) + " estimation\n";
+  // The axis from 0 holds every bar and the noise-floor line.
   figure_script::Span span;
-  span.add(0.0);
-  span.add(segs.empty() ? m.parts.all.rmse : 0.0);
+  for (double v : {0.0, m.noise_floor.sigma, segs.empty() ? m.parts.all.rmse : 0.0}) span.add(v);
   for (const auto& seg : segs) span.add(seg.metrics.rmse);
   write_file_atomic(dir / "segment_rmse.dat", data);
   const std::size_t bars = std::max<std::size_t>(1, segs.size());

@@ -13,7 +13,7 @@
 #include "framework/io/csv_format.hpp"
 #include "framework/io/segment_runs.hpp"
 #include "framework/report/gnuplot_script.hpp"
-#include "framework/report/fit_axis_tics.hpp"
+#include "framework/report/axis_tics.hpp"
 #include "framework/report/fit_segment_markers.hpp"
 
 namespace hystbench {

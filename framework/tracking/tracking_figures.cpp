@@ -7,7 +7,7 @@
 
 #include "framework/core/text.hpp"
 #include "framework/io/atomic_file.hpp"
-#include "framework/report/fit_axis_tics.hpp"
+#include "framework/report/axis_tics.hpp"
 #include "framework/report/gnuplot_script.hpp"
 #include "framework/report/table_format.hpp"
 #include "framework/robust/linear_system.hpp"

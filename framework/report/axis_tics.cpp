@@ -1,6 +1,6 @@
-// Tic spacing of the fit figures' panels: 1, 2 or 5 times a power of ten,
-// chosen from the data so that short panels are not crowded.
-#include "framework/report/fit_axis_tics.hpp"
+// Tic spacing of figure panels: 1, 2 or 5 times a power of ten, chosen from
+// the data so that short or narrow panels are not crowded.
+#include "framework/report/axis_tics.hpp"
 
 #include <algorithm>
 #include <cmath>
