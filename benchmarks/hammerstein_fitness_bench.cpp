@@ -5,11 +5,14 @@
 // seconds per item, printed with an SI prefix (470ps = 0.47 ns).
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "framework/core/rng.hpp"
 #include "problems/hammerstein/hammerstein_model.hpp"
 #include "problems/hammerstein/hammerstein_problem.hpp"
+#include "problems/hammerstein/recurrence_coefficients.hpp"
 
 namespace {
 
@@ -96,6 +99,79 @@ void sizes(benchmark::internal::Benchmark* b) {
       for (const long p : {8, 32, 64}) b->Args({n, p, threads});
   b->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
+
+// The yardstick for the batched kernel: the seed recurrence written as a
+// plain loop over eight candidates, state in arrays, for the compiler to
+// vectorise on its own (same flags, same coefficients, same operation order,
+// so the same SSE bit for bit). The kernel should not be slower than this.
+constexpr std::size_t kReferenceLanes = 8;
+using Row = std::array<double, kReferenceLanes>;
+
+Row coefficient_row(const std::vector<hystbench::RecurrenceCoefficients>& block,
+                    double hystbench::RecurrenceCoefficients::*field) {
+  Row row;
+  for (std::size_t l = 0; l < row.size(); ++l) row[l] = block[l].*field;
+  return row;
+}
+
+Row plain_loop_sse(const std::vector<hystbench::RecurrenceCoefficients>& q, const Eigen::VectorXd& u,
+                   const Eigen::VectorXd& y) {
+  using C = hystbench::RecurrenceCoefficients;
+  const Row beta = coefficient_row(q, &C::beta), aL = coefficient_row(q, &C::aL),
+            gamma = coefficient_row(q, &C::gamma), d1 = coefficient_row(q, &C::d1),
+            d2 = coefficient_row(q, &C::d2), k_h0 = coefficient_row(q, &C::k_h0),
+            k_h1 = coefficient_row(q, &C::k_h1), k_h2 = coefficient_row(q, &C::k_h2),
+            k_r1 = coefficient_row(q, &C::k_r1), k_r2 = coefficient_row(q, &C::k_r2),
+            a = coefficient_row(q, &C::a), b = coefficient_row(q, &C::b),
+            c = coefficient_row(q, &C::c), d = coefficient_row(q, &C::d);
+  Row h{}, h1_1{}, h1_2{}, r_1{}, r_2{}, r1_1{}, r1_2{}, sse{};
+  double u_prev = 0.0;
+  for (Eigen::Index k = 0; k < u.size(); ++k) {
+    const double dr = u[k] - u_prev, abs_dr = std::abs(dr), uk = u[k], yk = y[k];
+    u_prev = uk;
+    for (std::size_t l = 0; l < kReferenceLanes; ++l) {
+      const double hk = (h[l] * (1.0 - beta[l] * abs_dr) + aL[l] * dr) - gamma[l] * dr * std::abs(h[l]);
+      const double h1 = d1[l] * uk + d2[l] * uk * uk - hk;
+      const double r = (k_h0[l] * h1 + k_h1[l] * h1_1[l] + k_h2[l] * h1_2[l] + k_r2[l] * r_2[l]) + k_r1[l] * r_1[l];
+      const double r1 = (a[l] * r_1[l] + b[l] * r_2[l] - d[l] * r1_2[l]) - c[l] * r1_1[l];
+      h[l] = hk, h1_2[l] = h1_1[l], h1_1[l] = h1, r_2[l] = r_1[l], r_1[l] = r, r1_2[l] = r1_1[l], r1_1[l] = r1;
+      const double e = yk - r1;
+      sse[l] += e * e;
+    }
+  }
+  return sse;
+}
+
+void BM_HammersteinPlainLoop(benchmark::State& state) {
+  const Eigen::Index n = state.range(0), p = state.range(1);
+  const hystbench::Measurement m = sine_record(n);
+  const Eigen::MatrixXd X = candidates(p);
+  std::vector<std::vector<hystbench::RecurrenceCoefficients>> blocks(std::size_t(p) / kReferenceLanes);
+  for (Eigen::Index i = 0; i < p; ++i)
+    blocks[std::size_t(i) / kReferenceLanes].emplace_back(HammersteinParams::from_vector(X.col(i)), m.sample_time);
+  Eigen::VectorXd f(p);
+  for (auto _ : state) {
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      const Row sse = plain_loop_sse(blocks[b], m.u, m.y);
+      for (std::size_t l = 0; l < kReferenceLanes; ++l) f[Eigen::Index(b * kReferenceLanes + l)] = sse[l];
+    }
+    benchmark::DoNotOptimize(f.data());
+  }
+  // A yardstick that computed something else would measure nothing.
+  const HammersteinProblem problem(m, BoucWenForm::Increment, HammersteinProblem::default_bounds());
+  Eigen::VectorXd kernel(p);
+  problem.evaluate_with(X, kernel, hystbench::EvaluationOptions{1});
+  if (kernel != f) state.SkipWithError("the plain loop differs from the batched kernel");
+  state.counters["ns_per_sample_candidate"] = benchmark::Counter(
+      double(n * p), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_HammersteinPlainLoop)
+    ->ArgNames({"N", "P"})
+    ->Args({2000, 64})
+    ->Args({10000, 64})
+    ->Args({100000, 64})
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_TEMPLATE(BM_Hammerstein, ScalarHammerstein)->Name("BM_HammersteinProblemScalar")->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Hammerstein, HammersteinProblem)->Name("BM_HammersteinProblemBatched")->Apply(sizes);
