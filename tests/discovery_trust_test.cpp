@@ -106,6 +106,28 @@ TEST(ModelCheck, ParametersOnABoundAndDelaysInSeconds) {
   EXPECT_EQ(c.effects[0].at_bound, std::vector<std::string>{"delay.d"});
 }
 
+TEST(ModelCheck, AShapeParameterNeitherKeepsAnEffectOnNorSitsOnABound) {
+  // Without a limit, saturation does nothing whatever its softness, which
+  // the data then cannot determine; softness 0 is a hard clip, a shape of
+  // its own, not the edge of a range too narrow.
+  const ModelData d = linear_data(0.0);
+  const Model model = Model::parse("saturation");
+  for (const double softness : {0.0, 0.8}) {
+    Eigen::VectorXd x(3);
+    x << least_squares(d).x[0], 0.0, softness;
+    const ModelCheck off = check_model(model, x, d, "V", "µm");
+    EXPECT_TRUE(off.neutral("saturation")) << softness;
+    EXPECT_FALSE(off.parameters[2].at_bound) << softness;
+    // Data bent by that limit (the same noise): at the truth the effect is on.
+    x[1] = 0.5;
+    ModelData bent = d;
+    Eigen::VectorXd y;
+    ASSERT_TRUE(model.simulate(x, d, y));
+    bent.y = y + (d.y - 2.0 * d.u);
+    EXPECT_FALSE(check_model(model, x, bent, "V", "µm").neutral("saturation")) << softness;
+  }
+}
+
 // Normalised parameters of `model` from physical values with unit scales.
 Eigen::VectorXd values_of(const Model& model, const nlohmann::json& values) {
   return model.from_physical(values, SignalScales{}, "test");

@@ -91,16 +91,41 @@ TEST(EffectAsymmetry, AddsQuadraticOfTheDrive) {
   expect_values(y, {2.5, -2.0, 1.125});
 }
 
-TEST(EffectSaturation, LimitsByTanhOfInverseLimit) {
-  // λ = 1/L² = 0.25: L = 2, y = 2·tanh(u/2).
-  const auto y = run("saturation", {1.0, 0.25}, {1.0, -2.0, 4.0});
-  expect_values(y, {0.9242343145200195, -1.5231883119115297, 1.9280551601516338});
+TEST(EffectSaturation, LimitsByTheAlgebraicSigmoidAtTheNeutralSoftness) {
+  // λ = 1/L² = 0.25, softness 1/p = 0.5: L = 2, y = u/√(1 + u²/4).
+  const auto y = run("saturation", {1.0, 0.25, 0.5}, {1.0, -2.0, 4.0});
+  expect_values(y, {1.0 / std::sqrt(1.25), -2.0 / std::sqrt(2.0), 4.0 / std::sqrt(5.0)});
+}
+
+TEST(EffectSaturation, SoftnessSpansAHardClipToTheSoftestBend) {
+  // L = 2. Softness 0 (p = ∞): a clip at ±2. Softness 1 (p = 1): u/(1 + |u|/2).
+  // Softness 0.25 (p = 4): u/(1 + (u/2)⁴)^(1/4); beyond the knee it is computed
+  // from 2/u, so a huge drive gives the limit, not 0 from an overflow.
+  expect_values(run("saturation", {1.0, 0.25, 0.0}, {1.0, -2.0, 4.0, 1e200}), {1.0, -2.0, 2.0, 2.0});
+  expect_values(run("saturation", {1.0, 0.25, 1.0}, {1.0, -2.0, 4.0}), {2.0 / 3.0, -1.0, 4.0 / 3.0});
+  expect_values(run("saturation", {1.0, 0.25, 0.25}, {1.0, -4.0, 1e200}),
+                {1.0 / std::pow(1.0 + 1.0 / 16.0, 0.25), -4.0 / std::pow(17.0, 0.25), 2.0});
+}
+
+TEST(EffectSaturation, ANanStaysANanWhateverTheShape) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double softness : {0.0, 0.4, 1.0}) {
+    const Model m = Model::parse("saturation");
+    Eigen::VectorXd y;
+    m.simulate(params({1.0, 0.25, softness}), data_of({1.0, nan}, 0.01), y);
+    ASSERT_EQ(y.size(), 2);
+    EXPECT_TRUE(std::isnan(y[1])) << "softness " << softness;
+  }
+}
+
+TEST(EffectSaturation, WithoutALimitTheSignalPassesWhateverTheShape) {
+  expect_values(run("saturation", {1.0, 0.0, 0.0}, {1.0, -3.0}), {1.0, -3.0});
 }
 
 TEST(EffectSaturation, SaturatesTheStaticPartListedBeforeIt) {
-  // u = 1: gain·v + d2·v² = 1.5, then 2·tanh(1.5/2).
-  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.25}, {1.0});
-  expect_values(y, {1.2702979047745746});
+  // u = 1: gain·v + d2·v² = 1.5, then 1.5/√(1 + 1.5²/4).
+  const auto y = run("asymmetry,saturation", {1.0, 0.5, 0.25, 0.5}, {1.0});
+  expect_values(y, {1.5 / std::sqrt(1.0 + 2.25 / 4.0)});
 }
 
 TEST(EffectBacklash, PlayOperatorFromRest) {
@@ -317,7 +342,7 @@ TEST(EffectCatalog, NoFlatDirectionAgainstTheGainOrWithinTheChain) {
   const std::vector<std::pair<std::string, Eigen::VectorXd>> cases = {
       {"hysteresis", params({1.3, 0.6, 0.9, 0.3})},
       {"asymmetry", params({1.3, 0.2})},
-      {"saturation", params({1.3, 0.3})},
+      {"saturation", params({1.3, 0.3, 0.4})},
       {"backlash", params({1.3, 0.1})},
       {"delay", params({1.3, 2.5})},
       {"msd", params({1.3, 0.1, 0.2})},
@@ -329,7 +354,7 @@ TEST(EffectCatalog, NoFlatDirectionAgainstTheGainOrWithinTheChain) {
       {"hysteresis,asymmetry,msd,arx",
        params({1.3, 0.6, 0.9, 0.3, 0.2, 0.1, 0.2, -1.2, 0.5, 0.2, 0.1})},
       {"delay,hysteresis,asymmetry,saturation,msd,second_mode,creep,drift,offset",
-       params({1.3, 2.5, 0.6, 0.9, 0.3, 0.2, 0.3, 0.1, 0.2, 0.2, 1.3, 0.05, 0.03, 0.01, 0.1})},
+       params({1.3, 2.5, 0.6, 0.9, 0.3, 0.2, 0.3, 0.4, 0.1, 0.2, 0.2, 1.3, 0.05, 0.03, 0.01, 0.1})},
   };
   for (const auto& [name, x] : cases) {
     SCOPED_TRACE(name);
@@ -542,11 +567,12 @@ TEST(EffectCatalog, UnstableParametersGiveFalseNotNan) {
       {"second_mode", params({1.0, 0.2, 2.0, -0.05})},
       {"backlash", params({1.0, -0.1})},
       {"delay", params({1.0, -1.0})},
-      {"saturation", params({1.0, -0.5})},
+      {"saturation", params({1.0, -0.5, 0.5})},
+      {"saturation", params({1.0, 0.5, 1.5})},
       {"hysteresis", params({1.0, 10.0, 10.0, -10.0})},
       // tanh would turn the diverged loop into finite numbers: the hysteresis
       // itself must report the failure.
-      {"hysteresis,saturation", params({1.0, 10.0, 10.0, -10.0, 1.0})},
+      {"hysteresis,saturation", params({1.0, 10.0, 10.0, -10.0, 1.0, 0.5})},
       {"creep", params({1.0, std::numeric_limits<double>::quiet_NaN()})},
   };
   for (const auto& [model, x] : cases) {

@@ -189,7 +189,7 @@ TEST(StreamingModel, InvalidParametersAndDivergenceGiveNaN) {
   EXPECT_TRUE(std::isnan(invalid.step(1.0)));
 
   // A violent alternating drive makes the Bouc-Wen loop explode; saturation's
-  // tanh would hide it, so the loop itself has to report it.
+  // limit would hide it, so the loop itself has to report it.
   std::vector<double> alternating(400);
   for (std::size_t k = 0; k < alternating.size(); ++k) alternating[k] = k % 2 ? 3.0 : -3.0;
   for (const char* effects : {"hysteresis", "hysteresis,saturation"}) {

@@ -24,7 +24,7 @@ bool near_neutral(const EffectParam& p, double x, double sd) {
 
 bool on_bound(const EffectParam& p, double x) {
   const double tol = kBoundTolerance * (p.upper - p.lower);
-  return p.upper > p.lower && (x <= p.lower + tol || x >= p.upper - tol) && !near_neutral(p, x, 0.0);
+  return !p.shape && p.upper > p.lower && (x <= p.lower + tol || x >= p.upper - tol) && !near_neutral(p, x, 0.0);
 }
 
 std::vector<FittedParameter> fitted_parameters(const Model& model, const Eigen::VectorXd& x,
@@ -97,7 +97,8 @@ ModelCheck check_model(const Model& model, const Eigen::VectorXd& x, const Model
     EffectCheck e{effect, true, {}};
     std::vector<double> p;
     for (int i : model.parameters_of(effect)) {
-      e.neutral = e.neutral && u.available && near_neutral(model.parameter(i), x[i], u.sd[i]);
+      const EffectParam& param = model.parameter(i);
+      if (!param.shape) e.neutral = e.neutral && u.available && near_neutral(param, x[i], u.sd[i]);
       if (c.parameters[i].at_bound) e.at_bound.push_back(c.parameters[i].name);
       p.push_back(x[i]);
     }

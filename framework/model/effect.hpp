@@ -55,6 +55,12 @@ struct EffectParam {
   int u_power = 0;
   std::string unit;
   std::string doc;
+  // A shape parameter (saturation's softness): it matters only while the
+  // effect's other parameters are away from neutral, so it is left out of
+  // the "does nothing within noise" test, where it is undetermined; and its
+  // bounds are shapes of their own (softness 0 is a hard clip), so sitting
+  // on one is no sign of a search range too narrow.
+  bool shape = false;
 };
 
 // What an effect sees besides its own parameters and signal.

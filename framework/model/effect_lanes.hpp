@@ -44,13 +44,6 @@ inline LaneVector lane_abs(LaneVector x) {
   return std::bit_cast<LaneVector>(std::bit_cast<LaneBits>(x) & std::numeric_limits<std::int64_t>::max());
 }
 
-// tanh of a sample or of every lane, by std::tanh, so the two forms agree.
-inline double lane_tanh(double x) { return std::tanh(x); }
-inline LaneVector lane_tanh(LaneVector x) {
-  for (int l = 0; l < kEffectLanes; ++l) x[l] = std::tanh(x[l]);
-  return x;
-}
-
 inline bool lane_finite(double x, int /*lane*/ = 0) { return std::isfinite(x); }
 inline bool lane_finite(LaneVector x, int lane) { return std::isfinite(x[lane]); }
 // True when no lane is finite any more: a diverging block may stop early.

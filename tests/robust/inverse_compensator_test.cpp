@@ -68,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(
                            {{"hysteresis.A", 0.5}, {"hysteresis.beta", 0.8}, {"hysteresis.gamma", 0.2}, {"asymmetry.d2", 0.1}},
                            true},
                     Family{"hysteresis,saturation",
-                           {{"hysteresis.A", 0.5}, {"hysteresis.beta", 0.8}, {"hysteresis.gamma", 0.2}, {"saturation.lambda", 0.1}},
+                           {{"hysteresis.A", 0.5}, {"hysteresis.beta", 0.8}, {"hysteresis.gamma", 0.2}, {"saturation.lambda", 0.1}, {"saturation.softness", 0.4}},
                            true},
                     // The play is flat inside its dead band: the inverse is not unique there.
                     Family{"backlash,hysteresis",
