@@ -10,6 +10,7 @@
 #include "framework/core/rng.hpp"
 #include "framework/io/measurement.hpp"
 #include "framework/svr/svr_model.hpp"
+#include "framework/svr/svr_stream.hpp"
 #include "tests/run_command.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -137,6 +138,75 @@ TEST(SvrHammerstein, LearnsALoopAndRoundTripsThroughJson) {
   const SvrHammerstein loaded = SvrHammerstein::from_json(nlohmann::json::parse(text), "test");
   const Eigen::VectorXd a = model.simulate(x, y), b = loaded.simulate(x, y);
   for (Eigen::Index k = 0; k < a.size(); ++k) ASSERT_EQ(a[k], b[k]) << k;
+}
+
+// The rate regressor: tanh of the scaled input's step over the training
+// record's largest step, so that step gives exactly tanh(1) and the sign
+// follows the direction of the input.
+TEST(SvrHammerstein, InputRateIsOneMoreRegressorScaledByTheLargestStep) {
+  Eigen::VectorXd x, y;
+  loop_data(x, y, 600);
+  Eigen::MatrixXd rows;
+  Eigen::VectorXd targets;
+  SvrHammerstein::regression_rows(x, y, {2, 2, true}, rows, targets);
+  ASSERT_EQ(rows.cols(), 7);
+  EXPECT_EQ(rows.rows(), 600 - 3);  // rows predict samples 3 .. 599
+  EXPECT_DOUBLE_EQ(rows.col(6).cwiseAbs().maxCoeff(), std::tanh(1.0));
+  for (Eigen::Index r = 0; r < rows.rows(); ++r) {
+    const Eigen::Index k = r + 2;
+    const double dx = x[k] - x[k - 1];
+    if (std::abs(dx) > 1e-9) {
+      ASSERT_EQ(rows(r, 6) > 0, dx > 0) << k;
+    }
+    if (r + 1 < rows.rows()) {
+      ASSERT_EQ(rows(r, 0), rows(r + 1, 1)) << "x(k) is x(k-1) of the next row";
+    }
+  }
+  // Fitted, written and read back: the same free run bit for bit, and a
+  // file whose lags drop the rate no longer matches the regressor.
+  const SvrHammerstein model = SvrHammerstein::fit_stage1(x, y, {2, 2, true}, {0.001, 10.0, 1.0}, "test");
+  EXPECT_EQ(model.regressor().dimension(), 7);
+  nlohmann::json j = nlohmann::json::parse(model.to_json().dump());
+  const Eigen::VectorXd a = model.simulate(x, y), b = SvrHammerstein::from_json(j, "test").simulate(x, y);
+  for (Eigen::Index k = 0; k < a.size(); ++k) ASSERT_EQ(a[k], b[k]) << k;
+  const double rms = std::sqrt((a - y).squaredNorm() / double(y.size()));
+  EXPECT_LT(rms, 0.05 * (y.maxCoeff() - y.minCoeff())) << "free-run RMSE " << rms;
+  j["lags"].erase("input_rate");
+  try {
+    SvrHammerstein::from_json(j, "model.json");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(test_support::contains(e.what(), "model.json.svr.dimension")) << e.what();
+  }
+}
+
+// A loop's stream with the rate regressor: a trial of the front moves
+// nothing, so it equals the step that follows it, sample after sample.
+TEST(SvrHammerstein, StreamTrialWithTheRateLeavesTheStateAlone) {
+  Eigen::VectorXd x, y;
+  loop_data(x, y, 600);
+  const SvrHammerstein model = SvrHammerstein::fit_stage1(x, y, {2, 2, true}, {0.001, 10.0, 1.0}, "test");
+  SvrStream stream(model);
+  for (Eigen::Index k = 0; k < 300; ++k) {
+    const double trial = stream.predict_front(x[k]), again = stream.predict_front(x[k]);
+    ASSERT_EQ(trial, again) << k;
+    ASSERT_EQ(trial, stream.step_front(x[k])) << k;
+  }
+}
+
+// Stage 2 on the one-step prediction instead of the free run: a different
+// input to the ARX fit, so different coefficients.
+TEST(SvrHammerstein, CouplingChoosesWhatStageTwoIsFittedOn) {
+  Eigen::VectorXd x, y;
+  loop_data(x, y, 600);
+  SvrHammerstein free = SvrHammerstein::fit_stage1(x, y, {2, 2}, {0.01, 10.0, 1.0}, "test");
+  SvrHammerstein one = free;
+  const ArxSelection a = free.fit_stage2(x, y, 2, 2, "test");
+  const ArxSelection b = one.fit_stage2(x, y, 2, 2, "test", SvrCoupling::OneStep);
+  const ArxSelection c = free.fit_stage2(x, y, 2, 2, "test", SvrCoupling::FreeRun);
+  auto same = [](const ArxFit& f, const ArxFit& g) { return f.b.size() == g.b.size() && f.b == g.b; };
+  EXPECT_TRUE(same(a.best, c.best));
+  EXPECT_FALSE(same(a.best, b.best));
 }
 
 TEST(SvrHammerstein, TooShortOrConstantRecordsAreInputErrors) {

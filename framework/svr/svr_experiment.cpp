@@ -56,7 +56,7 @@ Experiment search_experiment(const nlohmann::json& j, const SvrExperiment& x, co
   problem["data"] = s1.is_string() ? s1 : s1["data"];
   if (s1.is_object() && s1.contains("segment")) problem["segment"] = s1["segment"];
   if (x.source.contains("columns")) problem["columns"] = x.source["columns"];
-  problem["lags"] = {{"m", x.lags.m}, {"n", x.lags.n}};
+  problem["lags"] = {{"m", x.lags.m}, {"n", x.lags.n}, {"input_rate", x.lags.input_rate}};
   const nlohmann::json optimizer = j.value("optimizer", nlohmann::json{{"name", "pso"}, {"params", {{"swarm", 20}}}});
   return Experiment::from_json({{"name", x.name + "_search"},
                                 {"problem", problem},
@@ -98,6 +98,13 @@ SvrHyperparameters fixed_hyperparameters(const nlohmann::json& j, const std::str
   return h;
 }
 
+SvrCoupling read_coupling(const std::string& name, const std::string& where) {
+  if (name == "free_run") return SvrCoupling::FreeRun;
+  if (name == "one_step") return SvrCoupling::OneStep;
+  throw InputError(where + ".coupling: \"" + name + "\" is not a coupling; give \"free_run\" (stage 2 "
+                   "fitted on stage 1's free run, the default) or \"one_step\" (on its one-step prediction)");
+}
+
 }  // namespace
 
 SvrExperiment SvrExperiment::load(const std::filesystem::path& file) {
@@ -108,7 +115,8 @@ SvrExperiment SvrExperiment::from_json(const nlohmann::json& j, const std::files
                                        const std::string& where) {
   if (!j.is_object()) throw InputError(where + ": the experiment must be a JSON object");
   require_known_keys(j, {"name", "description", "columns", "stage1", "stage2", "tests", "lags", "search", "arx",
-                         "greybox", "discard", "seed", "units", "hyperparameters", "train_rows", "records"},
+                         "greybox", "discard", "seed", "units", "hyperparameters", "train_rows", "records",
+                         "coupling"},
                      where);
   SvrExperiment x;
   x.source = j;
@@ -116,9 +124,11 @@ SvrExperiment SvrExperiment::from_json(const nlohmann::json& j, const std::files
   x.name = optional_text(j, "name", "svr", where);
   x.description = optional_text(j, "description", "", where);
   const nlohmann::json lags = j.value("lags", nlohmann::json::object());
-  require_known_keys(lags, {"m", "n"}, where + ".lags");
+  require_known_keys(lags, {"m", "n", "input_rate"}, where + ".lags");
   x.lags = {int(optional_number(lags, "m", 4, 0, 50, where + ".lags")),
-            int(optional_number(lags, "n", 4, 0, 50, where + ".lags"))};
+            int(optional_number(lags, "n", 4, 0, 50, where + ".lags")),
+            optional_flag(lags, "input_rate", false, where + ".lags")};
+  x.coupling = read_coupling(optional_text(j, "coupling", "free_run", where), where);
   const nlohmann::json arx = j.value("arx", nlohmann::json::object());
   require_known_keys(arx, {"p_max", "q_max"}, where + ".arx");
   x.p_max = int(optional_number(arx, "p_max", 5, 1, 20, where + ".arx"));

@@ -21,7 +21,9 @@
 // are not a 1 Hz record and a scan). "train_rows" caps the rows the final
 // stage 1 trains on (libsvm's cost grows with the square of the rows).
 // "hyperparameters": {"epsilon": 0.001, "C": 10, "sigma": 1} instead of
-// "search" skips the tuning.
+// "search" skips the tuning. "lags" may add the input's rate to stage 1's
+// regressors ("input_rate": true), and "coupling": "one_step" fits stage 2
+// on stage 1's one-step prediction instead of its free run (ablations).
 //
 // Everything is read and checked on load (records, sampling rates, lengths,
 // the search problem), so a bad file stops the command before any output.
@@ -56,7 +58,8 @@ struct SvrExperiment {
   long train_rows = 0;              // stage 1's final training rows (0: all), uniformly decimated
   std::vector<SvrRecord> tests;
   std::vector<SvrTestSignal> signals;
-  SvrLags lags;
+  SvrLags lags;                               // "lags": {"m", "n", "input_rate"}
+  SvrCoupling coupling = SvrCoupling::FreeRun;  // "coupling": "free_run" or "one_step"
   // Either fixed hyperparameters ("hyperparameters": {"epsilon", "C",
   // "sigma"}) or a search: one trial of one optimizer on the
   // svr_hyperparameters problem.

@@ -12,11 +12,22 @@ Eigen::VectorXd to_unit(const Eigen::VectorXd& v, const MinMaxScale& s) {
   return v.unaryExpr([&](double e) { return s.to_unit(e); });
 }
 
-// Row for predicting sample k+1: x(k..k-m), w(k..k-n), from scaled series.
+// Row for predicting sample k+1: x(k..k-m), w(k..k-n) [, r(k)], from scaled
+// series; `rate_step` scales the rate regressor.
 void fill_row(const Eigen::VectorXd& xs, const Eigen::VectorXd& ws, Eigen::Index k, const SvrLags& lags,
-              Eigen::Ref<Eigen::VectorXd> row) {
+              double rate_step, Eigen::Ref<Eigen::VectorXd> row) {
   for (int i = 0; i <= lags.m; ++i) row[i] = xs[k - i];
   for (int i = 0; i <= lags.n; ++i) row[lags.m + 1 + i] = ws[k - i];
+  if (lags.input_rate) row[lags.m + lags.n + 2] = std::tanh((xs[k] - xs[k - 1]) / rate_step);
+}
+
+// The largest step of a scaled input, so the training record's rates fill
+// tanh's steep part; faster tests saturate it instead of leaving the
+// kernel's reach.
+double largest_step(const Eigen::VectorXd& xs) {
+  if (xs.size() < 2) return 1.0;
+  const double step = (xs.tail(xs.size() - 1) - xs.head(xs.size() - 1)).cwiseAbs().maxCoeff();
+  return step > 0.0 ? step : 1.0;
 }
 
 nlohmann::json arx_json(const ArxFit& f) {
@@ -31,13 +42,14 @@ MinMaxScale MinMaxScale::of(const Eigen::VectorXd& x) { return {x.minCoeff(), x.
 void SvrHammerstein::regression_rows(const Eigen::VectorXd& x, const Eigen::VectorXd& y, const SvrLags& lags,
                                      Eigen::MatrixXd& rows, Eigen::VectorXd& targets) {
   const Eigen::VectorXd xs = to_unit(x, MinMaxScale::of(x)), ys = to_unit(y, MinMaxScale::of(y));
-  const Eigen::Index first = std::max(lags.m, lags.n), count = ys.size() - 1 - first;
-  rows.resize(std::max<Eigen::Index>(count, 0), lags.m + lags.n + 2);
+  const Eigen::Index first = lags.warmup() - 1, count = ys.size() - 1 - first;
+  const double rate_step = largest_step(xs);
+  rows.resize(std::max<Eigen::Index>(count, 0), lags.dimension());
   targets.resize(rows.rows());
   Eigen::VectorXd row(rows.cols());
   for (Eigen::Index r = 0; r < rows.rows(); ++r) {
     const Eigen::Index k = first + r;
-    fill_row(xs, ys, k, lags, row);
+    fill_row(xs, ys, k, lags, rate_step, row);
     rows.row(r) = row.transpose();
     targets[r] = ys[k + 1];
   }
@@ -71,13 +83,14 @@ SvrHammerstein SvrHammerstein::fit_stage1(const Eigen::VectorXd& x, const Eigen:
   Eigen::VectorXd targets;
   regression_rows(x, y, lags, rows, targets);
   if (max_rows > 0) decimate(rows, targets, max_rows);
-  return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys);
+  const double rate_step = lags.input_rate ? largest_step(to_unit(x, xs)) : 1.0;
+  return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys, rate_step);
 }
 
 ArxSelection SvrHammerstein::fit_stage2(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int p_max,
-                                        int q_max, const std::string& where) {
+                                        int q_max, const std::string& where, SvrCoupling coupling) {
   arx_.reset();  // stage 2 sees stage 1 alone
-  const Eigen::VectorXd w = stage1_free_run(x, y);
+  const Eigen::VectorXd w = coupling == SvrCoupling::FreeRun ? stage1_free_run(x, y) : one_step(x, y);
   ArxSelection s = select_arx(w, y, p_max, q_max, where);
   arx_ = s.best;
   return s;
@@ -86,9 +99,9 @@ ArxSelection SvrHammerstein::fit_stage2(const Eigen::VectorXd& x, const Eigen::V
 Eigen::VectorXd SvrHammerstein::one_step(const Eigen::VectorXd& x, const Eigen::VectorXd& y) const {
   const Eigen::VectorXd xs = to_unit(x, x_scale_), ys = to_unit(y, y_scale_);
   Eigen::VectorXd out = y;
-  Eigen::VectorXd row(lags_.m + lags_.n + 2);
+  Eigen::VectorXd row(lags_.dimension());
   for (Eigen::Index k = lags_.warmup() - 1; k + 1 < y.size(); ++k) {
-    fill_row(xs, ys, k, lags_, row);
+    fill_row(xs, ys, k, lags_, rate_step_, row);
     out[k + 1] = y_scale_.from_unit(svr_.predict(row));
   }
   return out;
@@ -99,9 +112,9 @@ Eigen::VectorXd SvrHammerstein::stage1_free_run(const Eigen::VectorXd& x, const 
   Eigen::VectorXd ws = Eigen::VectorXd::Zero(x.size());
   const Eigen::Index warm = std::min<Eigen::Index>(lags_.warmup(), x.size());
   ws.head(warm) = to_unit(y.head(warm), y_scale_);
-  Eigen::VectorXd row(lags_.m + lags_.n + 2);
+  Eigen::VectorXd row(lags_.dimension());
   for (Eigen::Index k = warm - 1; k + 1 < x.size(); ++k) {
-    fill_row(xs, ws, k, lags_, row);
+    fill_row(xs, ws, k, lags_, rate_step_, row);
     ws[k + 1] = svr_.predict(row);
   }
   return ws.unaryExpr([&](double s) { return y_scale_.from_unit(s); });
@@ -114,6 +127,7 @@ Eigen::VectorXd SvrHammerstein::simulate(const Eigen::VectorXd& x, const Eigen::
 
 std::string SvrHammerstein::describe() const {
   return "svr_hammerstein(m = " + std::to_string(lags_.m) + ", n = " + std::to_string(lags_.n) +
+         (lags_.input_rate ? ", input rate" : "") +
          (arx_ ? ", ARX " + std::to_string(arx_->p) + "/" + std::to_string(arx_->q) : std::string(", no ARX")) + ")";
 }
 
@@ -123,6 +137,10 @@ nlohmann::json SvrHammerstein::to_json() const {
                       {"input_scale", {{"min", x_scale_.lo}, {"max", x_scale_.hi}}},
                       {"output_scale", {{"min", y_scale_.lo}, {"max", y_scale_.hi}}},
                       {"svr", svr_.to_json()}};
+  if (lags_.input_rate) {
+    j["lags"]["input_rate"] = true;
+    j["rate_step"] = rate_step_;
+  }
   if (arx_) j["arx"] = arx_json(*arx_);
   return j;
 }
@@ -131,17 +149,21 @@ SvrHammerstein SvrHammerstein::from_json(const nlohmann::json& j, const std::str
   try {
     if (j.value("model", "") != "svr_hammerstein")
       throw InputError(where + ".model: not \"svr_hammerstein\"; this is not an SVR model file");
-    const SvrLags lags{j.at("lags").at("m").get<int>(), j.at("lags").at("n").get<int>()};
+    const SvrLags lags{j.at("lags").at("m").get<int>(), j.at("lags").at("n").get<int>(),
+                       j.at("lags").value("input_rate", false)};
     if (lags.m < 0 || lags.n < 0 || lags.m > 50 || lags.n > 50)
       throw InputError(where + ".lags: m and n must be from 0 to 50");
     const MinMaxScale xs{j.at("input_scale").at("min").get<double>(), j.at("input_scale").at("max").get<double>()};
     const MinMaxScale ys{j.at("output_scale").at("min").get<double>(),
                          j.at("output_scale").at("max").get<double>()};
     SvrRegressor svr = SvrRegressor::from_json(j.at("svr"), where + ".svr");
-    if (svr.dimension() != lags.m + lags.n + 2)
+    if (svr.dimension() != lags.dimension())
       throw InputError(where + ".svr.dimension: " + std::to_string(svr.dimension()) +
-                       " does not match the lags (m + n + 2 = " + std::to_string(lags.m + lags.n + 2) + ")");
-    SvrHammerstein model(std::move(svr), lags, xs, ys);
+                       " does not match the lags (m + n + 2" + (lags.input_rate ? " + 1 for the rate" : "") +
+                       " = " + std::to_string(lags.dimension()) + ")");
+    const double rate_step = lags.input_rate ? j.at("rate_step").get<double>() : 1.0;
+    if (!(rate_step > 0.0)) throw InputError(where + ".rate_step: must be positive");
+    SvrHammerstein model(std::move(svr), lags, xs, ys, rate_step);
     if (j.contains("arx")) {
       const auto& a = j["arx"];
       ArxFit f;

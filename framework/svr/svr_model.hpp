@@ -3,8 +3,10 @@
 // epsilon-SVR NARX that predicts the scaled output one step ahead from the
 // last m+1 inputs and n+1 outputs,
 //
-//   w(k+1) = f_SVR( x(k), ..., x(k-m), w(k), ..., w(k-n) ),
+//   w(k+1) = f_SVR( x(k), ..., x(k-m), w(k), ..., w(k-n) [, r(k)] ),
 //
+// optionally with the input's rate r(k) = tanh((x(k) - x(k-1)) / s), s the
+// largest step of the scaled training input (not in the seed: an ablation),
 // trained at 1 Hz where the actuator's dynamics do not show (series-parallel:
 // measured outputs in the regressors); stage 2, an ARX block from w to y
 // fitted on a frequency scan, with w the free-running stage 1 output.
@@ -12,6 +14,8 @@
 // model. RECONSTRUCTION: the seed gives the structure, m = n = 4 and the
 // orders by AIC, not how the stages are coupled (docs/svr.md#stage-2).
 #include "framework/core/eigen.hpp"
+#include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -21,11 +25,19 @@
 
 namespace hystbench {
 
+// Stage 1's regressors: the lags, and whether the input's rate is one more.
 struct SvrLags {
   int m = 4;  // input lags: x(k) .. x(k-m)
   int n = 4;  // output lags: w(k) .. w(k-n)
-  int warmup() const { return std::max(m, n) + 1; }  // samples taken as measured
+  bool input_rate = false;  // r(k) from x(k) - x(k-1) as the last regressor
+  int dimension() const { return m + n + 2 + (input_rate ? 1 : 0); }
+  int warmup() const { return std::max({m, n, input_rate ? 1 : 0}) + 1; }  // samples taken as measured
 };
+
+// How stage 2 sees stage 1 on the scan: its free run (the signal the whole
+// model passes on when simulated), or its one-step prediction from the
+// measured outputs (series-parallel, as stage 1 was trained).
+enum class SvrCoupling { FreeRun, OneStep };
 
 // Maps [lo, hi] onto [-1, 1].
 struct MinMaxScale {
@@ -54,7 +66,7 @@ class SvrHammerstein {
 
   // Stage 2 on a scan (x, y): AIC over p, q in 1..max. Returns the grid.
   ArxSelection fit_stage2(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int p_max, int q_max,
-                          const std::string& where);
+                          const std::string& where, SvrCoupling coupling = SvrCoupling::FreeRun);
 
   // Stage 1 alone, one step ahead with measured outputs: y_hat(k+1) from
   // y(k..k-n). The first lags.warmup() samples are copied from y.
@@ -70,6 +82,8 @@ class SvrHammerstein {
   const MinMaxScale& input_scale() const { return x_scale_; }
   const MinMaxScale& output_scale() const { return y_scale_; }
   const SvrRegressor& regressor() const { return svr_; }
+  // The rate regressor of a step from scaled input a to b (0 without one).
+  double rate_feature(double a, double b) const { return std::tanh((b - a) / rate_step_); }
   const std::optional<ArxFit>& arx() const { return arx_; }
 
   nlohmann::json to_json() const;
@@ -83,12 +97,13 @@ class SvrHammerstein {
   static SvrHammerstein from_json(const nlohmann::json& j, const std::string& where);
 
  private:
-  SvrHammerstein(SvrRegressor svr, SvrLags lags, MinMaxScale x_scale, MinMaxScale y_scale)
-      : svr_(std::move(svr)), lags_(lags), x_scale_(x_scale), y_scale_(y_scale) {}
+  SvrHammerstein(SvrRegressor svr, SvrLags lags, MinMaxScale x_scale, MinMaxScale y_scale, double rate_step)
+      : svr_(std::move(svr)), lags_(lags), x_scale_(x_scale), y_scale_(y_scale), rate_step_(rate_step) {}
 
   SvrRegressor svr_;
   SvrLags lags_;
   MinMaxScale x_scale_, y_scale_;
+  double rate_step_ = 1.0;  // s of the rate regressor (1 without one)
   std::optional<ArxFit> arx_;
 };
 

@@ -65,9 +65,11 @@ table::CellTable make_table(const SvrExperiment& x, const SvrResults& r, Format 
   const SvrHyperparameters& h = r.search.hyperparameters;
   const ArxFit& a = r.arx.best;
   std::string model = "SVR-NARX (m = " + std::to_string(x.lags.m) + ", n = " + std::to_string(x.lags.n) +
-                      ", epsilon = " + format_number("%.3g", h.epsilon) + ", C = " + format_number("%.4g", h.C) +
+                      (x.lags.input_rate ? ", input rate" : "") + ", epsilon = " + format_number("%.3g", h.epsilon) + ", C = " + format_number("%.4g", h.C) +
                       ", sigma = " + format_number("%.4g", h.sigma) + ")";
-  if (x.stage2) model += " then ARX(" + std::to_string(a.p) + ", " + std::to_string(a.q) + ") by AIC";
+  if (x.stage2)
+    model += " then ARX(" + std::to_string(a.p) + ", " + std::to_string(a.q) + ") by AIC" +
+             (x.coupling == SvrCoupling::OneStep ? " on stage 1's one-step prediction" : "");
   std::string caption = "Free-run errors of `" + x.name + "` on each test signal after a " +
                         format_number("%.0f", 100.0 * x.discard) + " % warm-up: " + model;
   if (x.greybox) caption += ", beside the grey-box `" + x.greybox->model.text() + "`";

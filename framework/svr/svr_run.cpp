@@ -79,7 +79,8 @@ SvrResults run_svr(const SvrExperiment& x, int threads, const std::function<void
   ArxSelection arx;
   if (x.stage2) {
     status("choosing the ARX orders on " + x.stage2->name);
-    arx = model.fit_stage2(x.stage2->data.u, x.stage2->data.y, x.p_max, x.q_max, x.name + ".stage2");
+    arx = model.fit_stage2(x.stage2->data.u, x.stage2->data.y, x.p_max, x.q_max, x.name + ".stage2",
+                           x.coupling);
   }
   status("scoring " + std::to_string(x.signals.size()) + " test signals");
   const auto greybox = greybox_outputs(x);

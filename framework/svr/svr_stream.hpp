@@ -29,8 +29,10 @@ class SvrStream {
   double step_back(double w);
 
  private:
+  void set_input(double u) const;
+
   const SvrHammerstein* model_;
-  mutable Eigen::VectorXd row_;      // x(k) .. x(k−m), w(k) .. w(k−n), scaled
+  mutable Eigen::VectorXd row_;      // x(k) .. x(k−m), w(k) .. w(k−n) [, r(k)], scaled
   std::vector<double> back_in_, back_out_;  // w(k) .., y(k−1) .., newest first
 };
 

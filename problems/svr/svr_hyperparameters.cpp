@@ -39,7 +39,7 @@ ProblemInfo SvrHyperparameterProblem::info() {
                .require(),
            ParamSpec::text("segment", "", "the segment of the record to train on; empty = all"),
            ParamSpec::object("columns", "column names of t, u, y in the CSV"),
-           ParamSpec::object("lags", "input and output lags {\"m\": 4, \"n\": 4}"),
+           ParamSpec::object("lags", "stage 1's regressors {\"m\": 4, \"n\": 4, \"input_rate\": false}"),
            ParamSpec::choice("fitness", "blocked_cv", {"blocked_cv", "libsvm_cv", "freerun_holdout"},
                              "validation error of the one-step prediction"),
            ParamSpec::integer("folds", 5, 2, 100, "cross-validation folds"),
@@ -64,9 +64,10 @@ SvrHyperparameterProblem::SvrHyperparameterProblem(const Params& p,
   x_ = record.data.u;
   y_ = record.data.y;
   const Params lags = validate_params({ParamSpec::integer("m", 4, 0, 50, "input lags"),
-                                       ParamSpec::integer("n", 4, 0, 50, "output lags")},
+                                       ParamSpec::integer("n", 4, 0, 50, "output lags"),
+                                       ParamSpec::boolean("input_rate", false, "the input's rate as a regressor")},
                                       p.value("lags"), "problem.lags");
-  lags_ = {lags.integer("m"), lags.integer("n")};
+  lags_ = {lags.integer("m"), lags.integer("n"), lags.boolean("input_rate")};
   const std::map<std::string, Fitness> fitness = {
       {"blocked_cv", Fitness::BlockedCv}, {"libsvm_cv", Fitness::LibsvmCv}, {"freerun_holdout", Fitness::FreerunHoldout}};
   fitness_ = fitness.at(p.text("fitness"));  // the choices the spec allows
@@ -145,7 +146,7 @@ nlohmann::json SvrHyperparameterProblem::describe() const {
   return {{"name", name()},
           {"fitness", std::string("MSE, ") + names[int(fitness_)]},
           {"data", data_name_},
-          {"lags", {{"m", lags_.m}, {"n", lags_.n}}},
+          {"lags", {{"m", lags_.m}, {"n", lags_.n}, {"input_rate", lags_.input_rate}}},
           {"rows", rows_.rows()},
           {"folds", folds_},
           {"parameters", bounds_.names}};
