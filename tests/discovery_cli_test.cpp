@@ -157,6 +157,40 @@ TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
   EXPECT_TRUE(fs::exists(dir_ / "l" / "ladder.gp"));
 }
 
+// A diagnose run of the start model is discover's first rung: started from
+// it, discover climbs the same ladder without diagnosing the start again,
+// and a diagnosis made with other options is refused naming the option.
+TEST_F(DiscoveryCli, DiscoverFromADiagnosisClimbsTheSameLadder) {
+  const std::string common = " --data " + path("data.csv") + " --candidates offset,drift,delay" + kQuick;
+  const auto d = run("diagnose --model msd --out " + path("d") + common);
+  ASSERT_EQ(d.code, 0) << d.output;
+  ASSERT_TRUE(fs::exists(dir_ / "d" / "checkpoint.json"));
+  const auto whole = run("discover --start msd --out " + path("whole") + common);
+  ASSERT_EQ(whole.code, 0) << whole.output;
+  const auto from = run("discover --start msd --diagnosis " + path("d") + " --out " + path("from") + common);
+  ASSERT_EQ(from.code, 0) << from.output;
+  EXPECT_NE(from.output.find("from " + path("d") + ", step 0: msd"), std::string::npos) << from.output;
+  auto a = read_json(dir_ / "whole" / "ladder.json"), b = read_json(dir_ / "from" / "ladder.json");
+  a.erase("provenance");
+  b.erase("provenance");
+  EXPECT_EQ(a.dump(), b.dump());
+  EXPECT_EQ(read_json(dir_ / "from" / "step_0" / "diagnosis.json")["verdict"], "offset");
+  EXPECT_TRUE(fs::exists(dir_ / "from" / "step_0" / "report.md"));
+  EXPECT_EQ(b["final_effects"], nlohmann::json({"msd", "offset"}));
+
+  const auto other = run("discover --start msd --seed 2 --diagnosis " + path("d") + " --out " + path("o") + common);
+  EXPECT_EQ(other.code, 2) << other.output;
+  EXPECT_NE(other.output.find("was made with another options."), std::string::npos) << other.output;
+  EXPECT_NE(other.output.find("fit.seed"), std::string::npos) << other.output;
+  EXPECT_FALSE(fs::exists(dir_ / "o" / "ladder.json"));
+  const auto start = run("discover --start none --diagnosis " + path("d") + " --out " + path("o") + common);
+  EXPECT_EQ(start.code, 2) << start.output;
+  EXPECT_NE(start.output.find("another options.start"), std::string::npos) << start.output;
+  const auto both = run("discover --start msd --resume --diagnosis " + path("d") + " --out " + path("o") + common);
+  EXPECT_EQ(both.code, 2) << both.output;
+  EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
+}
+
 TEST_F(DiscoveryCli, AWarmUpIsNeverScoredAndTravelsWithTheFit) {
   // 1 200 samples; the first 100 only initialise the model.
   const auto f = run("fit --data " + path("data.csv") + " --model msd,offset --warmup 100 --out " + path("w") + kQuick);

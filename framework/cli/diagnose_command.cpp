@@ -8,6 +8,7 @@
 #include "framework/cli/svr_comparison.hpp"
 #include "framework/core/error.hpp"
 #include "framework/discovery/diagnosis_report.hpp"
+#include "framework/discovery/ladder_report.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
 #include "framework/io/json_file.hpp"
@@ -82,9 +83,15 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   status.finish();
   std::string note;
   write_diagnosis(dir, d, data, source, holdout, note);
+  // Fitted here from the data's own scales, the diagnosis is the first rung
+  // `discover --start` would climb from: `discover --diagnosis` reuses it.
+  if (!start)
+    write_first_step(dir, d, {data, source, holdout, std::nullopt,
+                              first_step_options(model, options, o.fit.substeps)});
   print_diagnosis(d, source.y_unit);
   if (!note.empty()) std::cout << note << "\n";
-  std::cout << "wrote " << (dir / "report.md").string() << " and diagnosis.json\n";
+  std::cout << "wrote " << (dir / "report.md").string() << " and diagnosis.json"
+            << (start ? "" : " (checkpoint.json: discover --diagnosis starts from it)") << "\n";
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/cli/number_range.hpp"
+#include "framework/core/error.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/ladder_report.hpp"
 #include "framework/discovery/separability.hpp"
@@ -25,7 +26,18 @@ struct DiscoverCommandOptions {
   std::string start = "none";
   int max_steps = 8, refit_restarts = 1;
   bool resume = false;
+  std::string diagnosis;  // a diagnose folder of the start model: its first rung
 };
+
+// The diagnose run's report, figures and diagnosis.json become step 0's, as
+// discover would have written them itself.
+void copy_first_step(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::filesystem::create_directories(to);
+  for (const auto& entry : std::filesystem::directory_iterator(from))
+    if (entry.is_regular_file() && entry.path().filename() != "checkpoint.json")
+      std::filesystem::copy_file(entry.path(), to / entry.path().filename(),
+                                 std::filesystem::copy_options::overwrite_existing);
+}
 
 std::optional<double> true_noise_sd(const std::string& data_path) {
   const auto truth = read_truth(data_path);
@@ -67,17 +79,21 @@ void run_discover(DiscoverCommandOptions& o) {
   options.max_steps = o.max_steps;
   options.refit_restarts = o.refit_restarts;
   options.substeps = o.fit.substeps;
-  const LadderContext ctx{data, source, holdout, true_noise_sd(source.path),
-                          {{"start", start.text()},
-                           {"fit", options.diagnose.fit.to_json()},
-                           {"diagnose", options.diagnose.to_json()},
-                           {"max_steps", o.max_steps},
-                           {"refit_restarts", o.refit_restarts},
-                           {"substeps", o.fit.substeps}}};
-  // A resumed run reads its checkpoint before anything is written.
+  nlohmann::json context_options = first_step_options(start, options.diagnose, o.fit.substeps);
+  context_options["max_steps"] = o.max_steps;
+  context_options["refit_restarts"] = o.refit_restarts;
+  const LadderContext ctx{data, source, holdout, true_noise_sd(source.path), context_options};
+  // A resumed run, or one from a diagnosis, reads its checkpoint before
+  // anything is written.
   std::optional<Ladder> restored;
+  if (o.resume && !o.diagnosis.empty())
+    throw InputError("discover: give --resume (continue a stopped run) or --diagnosis (start from a "
+                     "diagnose run), not both");
   if (o.resume) restored = read_checkpoint(o.output.out, checkpoint_context(ctx), data, options);
+  if (!o.diagnosis.empty())
+    restored = read_checkpoint(o.diagnosis, first_step_context(ctx), data, options, "--diagnosis");
   const auto dir = o.resume ? std::filesystem::path(o.output.out) : o.output.prepare("ladder.json");
+  if (!o.diagnosis.empty()) copy_first_step(o.diagnosis, dir / "step_0");
 
   StatusLine status;
   std::size_t step = restored ? restored->diagnoses.size() : 0;
@@ -92,9 +108,13 @@ void run_discover(DiscoverCommandOptions& o) {
     write_ladder(dir, ladder, ctx, note, ladder.diagnoses.size() - 1);
     step = ladder.diagnoses.size();
   };
-  if (restored)
+  if (o.resume)
     std::cout << "resuming after step " << restored->diagnoses.size() - 1 << " ("
               << restored->steps.back().model.text() << ")" << std::endl;
+  if (!o.diagnosis.empty()) {
+    std::cout << "from " << o.diagnosis << ", ";
+    print_step(*restored, unit);
+  }
   const Ladder ladder = restored ? resume_discover(std::move(*restored), data, options, on_step)
                                  : discover(start, data, options, on_step);
   status.finish();
@@ -126,6 +146,9 @@ Action add_discover_command(CLI::App& app) {
   cmd->add_flag("--resume", o->resume,
                 "continue the stopped run in --out from its last finished step (checkpoint.json), "
                 "with the same data and options");
+  cmd->add_option("--diagnosis", o->diagnosis,
+                  "start from this folder of `hystbench diagnose --model START` (same data and options) "
+                  "instead of diagnosing the start model again");
   add_fit_options(cmd, o->fit);
   add_diagnose_options(cmd, o->diagnose);
   add_output_options(cmd, o->output);

@@ -109,19 +109,25 @@ nlohmann::json checkpoint_json(const Ladder& ladder, const nlohmann::json& conte
 }
 
 Ladder read_checkpoint(const std::filesystem::path& dir, const nlohmann::json& context,
-                       const ModelData& data, const DiscoverOptions& o) {
+                       const ModelData& data, const DiscoverOptions& o, const std::string& option) {
   const auto path = dir / "checkpoint.json";
   const std::string where = path.string();
+  const bool resume = option == "--resume";
   std::ifstream in(path);
   if (!in)
-    throw InputError("--resume: " + where + " does not exist; run discover without --resume first");
+    throw InputError(option + ": " + where + " does not exist; " +
+                     (resume ? "run discover without --resume first"
+                             : "run `hystbench diagnose --model START --out " + dir.string() +
+                                   "` with discover's data and options first"));
   Ladder ladder;
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
     if (j.value("format", "") != kFormat) throw InputError(where + ": not a discover checkpoint");
     if (const auto d = first_difference(j.at("context"), context); !d.empty())
-      throw InputError("--resume: " + where + " was made with another " + d +
-                       "; resume with the same data and options, or start again without --resume");
+      throw InputError(option + ": " + where + " was made with another " + d +
+                       (resume ? "; resume with the same data and options, or start again without --resume"
+                               : "; diagnose with discover's data, start model and options, or run "
+                                 "discover without --diagnosis"));
     const auto& steps = j.at("steps");
     const auto& diagnoses = j.at("diagnoses");
     if (steps.empty() || steps.size() != diagnoses.size())

@@ -18,8 +18,12 @@ nlohmann::json checkpoint_json(const Ladder& ladder, const nlohmann::json& conte
 
 // Reads DIR/checkpoint.json and rebuilds the ladder on `data`. Throws
 // InputError when the file is missing or unreadable, or when its context
-// differs from `context`, naming the first key that differs.
+// differs from `context`, naming the first key that differs. `option` is the
+// command-line option that named DIR: "--resume" (a stopped discover run) or
+// "--diagnosis" (a diagnose run of the start model); the messages say how
+// to make the file that fits.
 Ladder read_checkpoint(const std::filesystem::path& dir, const nlohmann::json& context,
-                       const ModelData& data, const DiscoverOptions& options);
+                       const ModelData& data, const DiscoverOptions& options,
+                       const std::string& option = "--resume");
 
 }  // namespace hystbench

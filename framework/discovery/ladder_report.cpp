@@ -284,4 +284,26 @@ nlohmann::json checkpoint_context(const LadderContext& ctx) {
           {"options", ctx.options}};
 }
 
+std::filesystem::path write_first_step(const std::filesystem::path& dir, const Diagnosis& d,
+                                       const LadderContext& ctx) {
+  Ladder ladder;
+  LadderStep first{d.model, d.x, d.errors};
+  first.bic = d.bic;
+  ladder.steps.push_back(std::move(first));
+  ladder.diagnoses.push_back(d);
+  const auto path = dir / "checkpoint.json";
+  write_file_atomic(path, checkpoint_json(ladder, first_step_context(ctx)).dump(1) + "\n");
+  return path;
+}
+
+nlohmann::json first_step_options(const Model& start, const DiagnoseOptions& o, int substeps) {
+  return {{"start", start.text()}, {"fit", o.fit.to_json()}, {"diagnose", o.to_json()}, {"substeps", substeps}};
+}
+
+nlohmann::json first_step_context(const LadderContext& ctx) {
+  nlohmann::json j = checkpoint_context(ctx);
+  for (const char* key : {"max_steps", "refit_restarts"}) j["options"].erase(key);
+  return j;
+}
+
 }  // namespace hystbench

@@ -36,5 +36,17 @@ std::vector<std::filesystem::path> write_ladder(const std::filesystem::path& dir
 
 // What a resumed run must match: data, hold-out and options.
 nlohmann::json checkpoint_context(const LadderContext& ctx);
+// The part of it that the first rung depends on: everything but the
+// ladder's own options (max_steps, refit_restarts). `hystbench diagnose
+// --model` writes its diagnosis as a one-rung checkpoint under this context,
+// and `discover --diagnosis` starts from it instead of diagnosing the start
+// model again.
+nlohmann::json first_step_context(const LadderContext& ctx);
+// The options of a ladder's context that its first rung depends on.
+nlohmann::json first_step_options(const Model& start, const DiagnoseOptions& o, int substeps);
+// Writes `d`, the diagnosis of the fitted start model, as DIR/checkpoint.json:
+// a ladder of one rung under first_step_context(ctx).
+std::filesystem::path write_first_step(const std::filesystem::path& dir, const Diagnosis& d,
+                                       const LadderContext& ctx);
 
 }  // namespace hystbench
