@@ -25,6 +25,12 @@ Outcome run(const std::string& args) { return hystbench::test_support::hystbench
 
 nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
 
+int count(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+  return n;
+}
+
 // Digits of a printed number from its first non-zero one, exponent aside:
 // "0.01235" and "1.235e-05" have 4.
 int significant_digits(const std::string& printed) {
@@ -170,6 +176,7 @@ TEST_F(DiscoveryCli, DiscoverFromADiagnosisClimbsTheSameLadder) {
   const auto from = run("discover --start msd --diagnosis " + path("d") + " --out " + path("from") + common);
   ASSERT_EQ(from.code, 0) << from.output;
   EXPECT_NE(from.output.find("from " + path("d") + ", step 0: msd"), std::string::npos) << from.output;
+  EXPECT_EQ(count(from.output, "step 0"), 1) << "the start model was diagnosed again:\n" << from.output;
   auto a = read_json(dir_ / "whole" / "ladder.json"), b = read_json(dir_ / "from" / "ladder.json");
   a.erase("provenance");
   b.erase("provenance");
@@ -182,13 +189,35 @@ TEST_F(DiscoveryCli, DiscoverFromADiagnosisClimbsTheSameLadder) {
   EXPECT_EQ(other.code, 2) << other.output;
   EXPECT_NE(other.output.find("was made with another options."), std::string::npos) << other.output;
   EXPECT_NE(other.output.find("fit.seed"), std::string::npos) << other.output;
-  EXPECT_FALSE(fs::exists(dir_ / "o" / "ladder.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "o")) << "a refused rung must leave nothing behind";
   const auto start = run("discover --start none --diagnosis " + path("d") + " --out " + path("o") + common);
   EXPECT_EQ(start.code, 2) << start.output;
   EXPECT_NE(start.output.find("another options.start"), std::string::npos) << start.output;
   const auto both = run("discover --start msd --resume --diagnosis " + path("d") + " --out " + path("o") + common);
   EXPECT_EQ(both.code, 2) << both.output;
   EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
+}
+
+// A start model that is already the last rung: with only `delay` to try,
+// nothing captures the hidden offset, and the diagnosis says the rest is
+// beyond the catalog. Started from it, discover must end with the same
+// verdict and reason, which were judged on candidates a rung does not keep.
+TEST_F(DiscoveryCli, DiscoverFromALastRungKeepsItsBeyondCatalogVerdict) {
+  const std::string common = " --data " + path("data.csv") + " --candidates delay" + kQuick;
+  const auto d = run("diagnose --model msd --out " + path("d") + common);
+  ASSERT_EQ(d.code, 0) << d.output;
+  const auto whole = run("discover --start msd --out " + path("whole") + common);
+  ASSERT_EQ(whole.code, 0) << whole.output;
+  const auto from = run("discover --start msd --diagnosis " + path("d") + " --out " + path("from") + common);
+  ASSERT_EQ(from.code, 0) << from.output;
+  auto a = read_json(dir_ / "whole" / "ladder.json"), b = read_json(dir_ / "from" / "ladder.json");
+  ASSERT_EQ(a["completeness"]["kind"], "beyond_catalog") << a["completeness"].dump();
+  a.erase("provenance");
+  b.erase("provenance");
+  EXPECT_EQ(a.dump(), b.dump());
+  EXPECT_EQ(hystbench::test_support::read(dir_ / "whole" / "ladder.md"),
+            hystbench::test_support::read(dir_ / "from" / "ladder.md"));
 }
 
 TEST_F(DiscoveryCli, AWarmUpIsNeverScoredAndTravelsWithTheFit) {

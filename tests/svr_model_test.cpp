@@ -180,13 +180,22 @@ TEST(SvrHammerstein, InputRateIsOneMoreRegressorScaledByTheLargestStep) {
   }
 }
 
-// A loop's stream with the rate regressor: a trial of the front moves
-// nothing, so it equals the step that follows it, sample after sample.
+// A loop's stream with the rate regressor: from rest, the first input's
+// row is built by hand (the rate from 0 V to u, scaled by the model file's
+// rate_step); a trial of the front moves nothing, so it equals the step
+// that follows it, sample after sample.
 TEST(SvrHammerstein, StreamTrialWithTheRateLeavesTheStateAlone) {
   Eigen::VectorXd x, y;
   loop_data(x, y, 600);
   const SvrHammerstein model = SvrHammerstein::fit_stage1(x, y, {2, 2, true}, {0.001, 10.0, 1.0}, "test");
   SvrStream stream(model);
+  const double u = 40.0, step = model.to_json()["rate_step"].get<double>();
+  const double at_rest = model.input_scale().to_unit(0.0), x0 = model.input_scale().to_unit(u);
+  Eigen::VectorXd row(7);
+  row << x0, at_rest, at_rest, Eigen::Vector3d::Constant(model.output_scale().to_unit(0.0)),
+      std::tanh((x0 - at_rest) / step);
+  EXPECT_GT(row[6], 0.0);
+  EXPECT_EQ(stream.predict_front(u), model.output_scale().from_unit(model.regressor().predict(row)));
   for (Eigen::Index k = 0; k < 300; ++k) {
     const double trial = stream.predict_front(x[k]), again = stream.predict_front(x[k]);
     ASSERT_EQ(trial, again) << k;

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -88,6 +89,8 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   if (!start)
     write_first_step(dir, d, {data, source, holdout, std::nullopt,
                               first_step_options(model, options, o.fit.substeps)});
+  else  // a rung left by an earlier run into this folder would not match this report
+    std::filesystem::remove(dir / "checkpoint.json");
   print_diagnosis(d, source.y_unit);
   if (!note.empty()) std::cout << note << "\n";
   std::cout << "wrote " << (dir / "report.md").string() << " and diagnosis.json"

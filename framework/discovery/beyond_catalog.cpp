@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/core/error.hpp"
 #include "framework/core/text.hpp"
 #include "framework/discovery/diagnosis.hpp"
 #include "framework/io/json_number.hpp"
@@ -155,6 +156,36 @@ nlohmann::json BeyondCatalog::to_json() const {
           {"stages", hystbench::to_json(stages)},
           {"advice", advice},
           {"judged_on", judged_on}};
+}
+
+namespace {
+
+double number_of(const nlohmann::json& j) {
+  return j.is_null() ? std::numeric_limits<double>::quiet_NaN() : j.get<double>();
+}
+
+TermStage stage_named(const std::string& name) {
+  for (TermStage s : {TermStage::Input, TermStage::Static, TermStage::Dynamics, TermStage::Output})
+    if (term_stage_name(s) == name) return s;
+  throw InputError("unknown term stage \"" + name + "\"");
+}
+
+}  // namespace
+
+BeyondCatalog BeyondCatalog::from_json(const nlohmann::json& j) {
+  BeyondCatalog b;
+  b.applies = j.at("applies").get<bool>();
+  b.refused = j.at("refused").is_null() ? std::string() : j.at("refused").get<std::string>();
+  b.refused_share = number_of(j.at("refused_share"));
+  for (const auto& t : j.at("tried")) b.tried.emplace_back(t.at("effect").get<std::string>(), number_of(t.at("excess_share")));
+  b.where = j.at("where").get<std::vector<std::string>>();
+  for (const auto& l : j.at("stages"))
+    b.stages.push_back({stage_named(l.at("stage").get<std::string>()),
+                        l.at("term").is_null() ? std::string() : l.at("term").get<std::string>(),
+                        number_of(l.at("share_of_residual"))});
+  b.advice = j.at("advice").get<std::string>();
+  b.judged_on = j.at("judged_on").get<std::string>();
+  return b;
 }
 
 }  // namespace hystbench

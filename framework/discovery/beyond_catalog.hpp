@@ -45,6 +45,9 @@ struct BeyondCatalog {
   std::string judged_on = "held-out";  // the data the shares are of: "held-out" or "estimation"
 
   nlohmann::json to_json() const;
+  // Reads what to_json wrote (a discover checkpoint keeps it); throws
+  // nlohmann::json::exception or InputError on a malformed object.
+  static BeyondCatalog from_json(const nlohmann::json& j);
 };
 
 // The held-out excess share of a candidate of `d` (estimation when nothing

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "framework/core/error.hpp"
+#include "framework/discovery/beyond_catalog.hpp"
 #include "framework/discovery/comparison.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
@@ -56,6 +57,14 @@ Diagnosis restored_diagnosis(const nlohmann::json& j, const ModelData& data,
   if (!simulate_physical(d.model, d.x, data, y)) y = Eigen::VectorXd::Zero(data.size());
   d.where = compare_signals(comparison_input(data, std::move(y), o.diagnose.u_unit, o.diagnose.y_unit));
   d.completeness = assess_completeness(d.errors, d.where);
+  // What the diagnosis added on top of the assessment when no effect
+  // captured what was left (describe_beyond_catalog): kept, not recomputed,
+  // because it was judged on candidates the checkpoint does not keep.
+  if (j.contains("beyond")) {
+    d.beyond = BeyondCatalog::from_json(j.at("beyond"));
+    d.completeness.kind = j.at("completeness_kind").get<std::string>();
+    d.completeness.reason = j.at("completeness_reason").get<std::string>();
+  }
   d.check = check_model(d.model, d.x, data, o.diagnose.u_unit, o.diagnose.y_unit);
   d.optimum = OptimumCheck::from_json(j.at("optimum"));
   d.verdict = j.at("verdict").get<std::string>();
@@ -86,6 +95,9 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
                           {"reason", d.close_call.reason},
                           {"runner_up", d.close_call.runner_up}}},
           {"optimum", d.optimum.to_json()},
+          {"beyond", d.beyond.to_json()},
+          {"completeness_kind", d.completeness.kind},
+          {"completeness_reason", d.completeness.reason},
           {"winner", winner}};
 }
 

@@ -162,7 +162,8 @@ SvrHammerstein SvrHammerstein::from_json(const nlohmann::json& j, const std::str
                        " does not match the lags (m + n + 2" + (lags.input_rate ? " + 1 for the rate" : "") +
                        " = " + std::to_string(lags.dimension()) + ")");
     const double rate_step = lags.input_rate ? j.at("rate_step").get<double>() : 1.0;
-    if (!(rate_step > 0.0)) throw InputError(where + ".rate_step: must be positive");
+    if (!(rate_step > 0.0) || !std::isfinite(rate_step))
+      throw InputError(where + ".rate_step: must be a positive finite number");
     SvrHammerstein model(std::move(svr), lags, xs, ys, rate_step);
     if (j.contains("arx")) {
       const auto& a = j["arx"];
