@@ -98,7 +98,7 @@ w("")
 w(f"{ok} of {len(rows)} cases: verdict names the hidden effect (or `none`), the final model holds every "
   f"hidden effect and no spurious one, and its held-out RMSE is within 1.2 σ. `complete` is the ladder's "
   f"own verdict (white residual at the noise estimate on estimation and held-out data). Samples per record: {rows[0]['samples'] if rows else 0}. "
-  f"Total diagnose + discover time {total:.0f} s (2 cores, shared).\n")
+  f"Total diagnose + discover time {total:.0f} s on 2 cores.\n")
 w("Each case's discovery ladder is in `<case>/ladder.md`, its diagnosis in `<case>/diagnosis.json`; "
   "every run's numbers are in `summary.csv`.")
 open(sys.argv[2], "w", encoding="utf-8").write("\n".join(lines) + "\n")
