@@ -42,7 +42,8 @@ run_case() {
   cmake -S proposals/effect -B "$dir/effect-build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build" >/dev/null
   cmake --build "$dir/effect-build" >/dev/null
   t0=$SECONDS
-  "$exe" discover --data data.csv --start "$seed_chain" --plugin "$dir/effect-build/proposed_term.so" \
+  # Relative, as every path the reports record, so that no machine path lands in them.
+  "$exe" discover --data data.csv --start "$seed_chain" --plugin effect-build/proposed_term.so \
     --candidates proposed_term --out with_effect > with_effect.log
   echo "with_effect_seconds=$((SECONDS - t0))" >> timings.txt
   # What is committed: reports, JSON, gnuplot scripts and PNG figures; not

@@ -5,27 +5,53 @@
 //   signal[k] += c·x³,   x' = (x[k] − x[k−1]) / Ts,   x'[0] = 0
 //
 // with x the resonance's own output (the force depends on the output it drives). c = 0 leaves the signal unchanged.
-// Build: see docs/plugins.md (out of the tree: a shared library).
-#include <cmath>
-#include <algorithm>
+// Written as one per-sample kernel (framework/model/kernel_effect.hpp), which
+// gives the effect its batched form: candidates are fitted a block at a time,
+// as the catalog's effects are. Build: see docs/plugins.md (out of the tree: a
+// shared library).
 #include <array>
+#include <cmath>
+#include <span>
 #include <numbers>
 
 #include "problems/hammerstein/effects/biquad.hpp"
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace {
 
-// |a|^power, times sign(a) when odd.
-double factor(double a, int power, bool odd) {
-  double m = 1.0;
-  for (int i = 0; i < power; ++i) m *= std::abs(a);
-  if (odd && power > 0) m = a < 0 ? -m : (a > 0 ? m : 0.0);
+using hystbench::LaneBits;
+using hystbench::LaneVector;
+using hystbench::lane_abs;
+
+// √x, and whether every lane of a mask is set: for one candidate (double,
+// bool) or a block (LaneVector, LaneBits).
+double lane_sqrt(double x) { return std::sqrt(x); }
+LaneVector lane_sqrt(LaneVector x) {
+  for (int l = 0; l < hystbench::kEffectLanes; ++l) x[l] = std::sqrt(x[l]);
+  return x;
+}
+bool lane_all(bool m) { return m; }
+bool lane_all(LaneBits m) {
+  for (int l = 0; l < hystbench::kEffectLanes; ++l)
+    if (!m[l]) return false;
+  return true;
+}
+
+// |a|^power (√|a| when root), times sign(a) when odd.
+template <class V>
+V factor(V a, int power, bool odd, bool root = false) {
+  V m = V{} + 1.0;
+  if (root && power > 0)
+    m = lane_sqrt(lane_abs(a));
+  else
+    for (int i = 0; i < power; ++i) m *= lane_abs(a);
+  if (odd && power > 0) m = a < V{} ? -m : (a > V{} ? m : V{});
   return m;
 }
 
-double term(double a, double a_rate) {
+template <class V>
+V term(V a, V a_rate) {
   return factor(a, 3, true) * factor(a_rate, 0, false);
 }
 
@@ -41,7 +67,7 @@ hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
   return {hystbench::correlation(r.e, phi)};
 }
 
-class ProposedTerm : public hystbench::Effect {
+class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 6, hystbench::EffectDrive::None> {
  public:
   static hystbench::EffectInfo info() {
     hystbench::EffectInfo i;
@@ -58,53 +84,73 @@ class ProposedTerm : public hystbench::Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double period = p[0], zeta = p[1], c = p[2], Ts = ctx.sample_time;
-    if (!std::isfinite(period) || !std::isfinite(zeta) || !std::isfinite(c) || period < 0.0) return false;
-    if (!(Ts > 0.0) || !std::isfinite(Ts)) return false;
-    std::array<double, 5> g{};  // G = 1 − H, as msd
-    const bool resonant = period > 0.0;
-    if (resonant) {
-      if (!(zeta > 0.0)) return false;
-      const auto [k2, q, a0] = hystbench::tustin_resonance(period / (std::numbers::pi * Ts), zeta);
-      g = {(k2 + q) / a0, -2.0 * k2 / a0, (k2 - q) / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0};
-      if (!std::isfinite(g[3]) || !std::isfinite(g[4]) || !std::isfinite(g[0])) return false;
+  struct Aux {
+    double ts;
+  };
+  static Aux aux(double ts) { return {ts}; }
+  static constexpr bool kEarlyExit = true;
+
+  // c = (g0, g1, g2, g3, g4, coefficient): G = 1 − H as msd, all 0 without a resonance.
+  static hystbench::EffectSetup setup(std::span<const double> p, double ts, std::array<double, 6>& c) {
+    const double period = p[0], zeta = p[1], coefficient = p[2];
+    if (!std::isfinite(period) || !std::isfinite(zeta) || !std::isfinite(coefficient) || period < 0.0)
+      return hystbench::EffectSetup::Invalid;
+    if (!(ts > 0.0) || !std::isfinite(ts)) return hystbench::EffectSetup::Invalid;
+    c = {0.0, 0.0, 0.0, 0.0, 0.0, coefficient};
+    if (period == 0.0) return coefficient == 0.0 ? hystbench::EffectSetup::PassThrough : hystbench::EffectSetup::Run;
+    if (!(zeta > 0.0)) return hystbench::EffectSetup::Invalid;
+    const auto [k2, q, a0] = hystbench::tustin_resonance(period / (std::numbers::pi * ts), zeta);
+    c = {(k2 + q) / a0, -2.0 * k2 / a0, (k2 - q) / a0, (2.0 - 2.0 * k2) / a0, (k2 - q + 1.0) / a0, coefficient};
+    if (!std::isfinite(c[3]) || !std::isfinite(c[4]) || !std::isfinite(c[0])) return hystbench::EffectSetup::Invalid;
+    return hystbench::EffectSetup::Run;
+  }
+
+  template <class V>
+  struct State {
+    hystbench::BiquadState<V> resonance{};
+    V x1{};      // the output one sample earlier
+    V finite{};  // 0 while every output is finite and every force was solved
+  };
+
+  template <class V, class Drive>
+  static V sample(const std::array<V, 6>& c, const Aux& aux, State<V>& s, V w, Drive) {
+    const std::array<V, 5> g = {c[0], c[1], c[2], c[3], c[4]};
+    const V coefficient = c[5], one = V{} + 1.0;
+    // The output for a given input of the resonance at this sample, its state left as it is.
+    const auto output = [&](V input) {
+      const V gw = ((g[0] * input + g[1] * s.resonance.w1) + (g[2] * s.resonance.w2 - g[4] * s.resonance.y2)) -
+                   g[3] * s.resonance.y1;
+      return input - gw;
+    };
+    // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts)),
+    // solved by Newton's method from the previous output, every lane on its own
+    // (a lane stops when it has converged, or fails when it cannot).
+    const auto residual = [&](V x) { return x - output(w + coefficient * term(x, (x - s.x1) / aux.ts)); };
+    V x = s.x1;
+    auto done = coefficient == V{};  // no force: nothing to solve
+    auto failed = coefficient != coefficient;  // none yet
+    for (int i = 0; i < 12 && !lane_all(done); ++i) {
+      const V f = residual(x), h = 1e-7 * (one < lane_abs(x) ? lane_abs(x) : one);
+      const V slope = (residual(x + h) - f) / h;
+      const auto broken = (f - f != V{}) | (slope - slope != V{}) | (slope == V{});
+      const V step = f / slope, next = x - step;
+      failed = done ? failed : (failed | broken);
+      const auto close = lane_abs(step) <= 1e-12 * (one < lane_abs(next) ? lane_abs(next) : one);
+      x = done ? x : next;
+      done = done ? done : (close | broken);
     }
-    hystbench::BiquadState<double> state{};
-    double x1 = 0.0;  // the output one sample earlier
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      const double w = signal[k];
-      // The output for a given input of the resonance at this sample, its state left as it is.
-      const auto output = [&](double input) {
-        if (!resonant) return input;
-        const double gw = ((g[0] * input + g[1] * state.w1) + (g[2] * state.w2 - g[4] * state.y2)) - g[3] * state.y1;
-        return input - gw;
-      };
-      double force = 0.0;
-      if (c != 0.0) {
-        // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts)),
-        // solved by Newton's method from the previous output.
-        const auto residual = [&](double x) { return x - output(w + c * term(x, (x - x1) / Ts)); };
-        double x = x1;
-        bool converged = false;
-        for (int i = 0; i < 12 && !converged; ++i) {
-          const double f = residual(x), h = 1e-7 * std::max(1.0, std::abs(x));
-          const double slope = (residual(x + h) - f) / h;
-          if (!std::isfinite(f) || !std::isfinite(slope) || slope == 0.0) return false;
-          const double step = f / slope;
-          x -= step;
-          converged = std::abs(step) <= 1e-12 * std::max(1.0, std::abs(x));
-        }
-        if (!converged) return false;  // no output consistent with its force: diverging
-        force = c * term(x, (x - x1) / Ts);
-      }
-      const double input = w + force;
-      const double x = resonant ? input - hystbench::biquad_step(g, state, input) : input;
-      signal[k] = x;
-      x1 = x;
-    }
-    return signal.allFinite();
+    failed = failed | (done == decltype(done){});  // no output consistent with its force: diverging
+    const V force = coefficient == V{} ? V{} : coefficient * term(x, (x - s.x1) / aux.ts);
+    const V input = w + force;
+    const V out = input - hystbench::biquad_step(g, s.resonance, input);
+    s.x1 = out;
+    s.finite = failed ? V{} + NAN : s.finite + out * 0.0;
+    return out;
+  }
+
+  template <class V>
+  static V health(const std::array<V, 6>&, const State<V>& s) {
+    return s.finite;
   }
 };
 }  // namespace

@@ -5,23 +5,51 @@
 //   signal[k] += c·v·|v'|,   v' = (v[k] − v[k−1]) / Ts,   v'[0] = 0
 //
 // with v the drive (the stage input). c = 0 leaves the signal unchanged.
-// Build: see docs/plugins.md (out of the tree: a shared library).
+// Written as one per-sample kernel (framework/model/kernel_effect.hpp), which
+// gives the effect its batched form: candidates are fitted a block at a time,
+// as the catalog's effects are. Build: see docs/plugins.md (out of the tree: a
+// shared library).
+#include <array>
 #include <cmath>
+#include <span>
 
-#include "framework/model/effect.hpp"
+#include "framework/model/kernel_effect.hpp"
 #include "framework/model/regressors.hpp"
 
 namespace {
 
-// |a|^power, times sign(a) when odd.
-double factor(double a, int power, bool odd) {
-  double m = 1.0;
-  for (int i = 0; i < power; ++i) m *= std::abs(a);
-  if (odd && power > 0) m = a < 0 ? -m : (a > 0 ? m : 0.0);
+using hystbench::LaneBits;
+using hystbench::LaneVector;
+using hystbench::lane_abs;
+
+// √x, and whether every lane of a mask is set: for one candidate (double,
+// bool) or a block (LaneVector, LaneBits).
+double lane_sqrt(double x) { return std::sqrt(x); }
+LaneVector lane_sqrt(LaneVector x) {
+  for (int l = 0; l < hystbench::kEffectLanes; ++l) x[l] = std::sqrt(x[l]);
+  return x;
+}
+bool lane_all(bool m) { return m; }
+bool lane_all(LaneBits m) {
+  for (int l = 0; l < hystbench::kEffectLanes; ++l)
+    if (!m[l]) return false;
+  return true;
+}
+
+// |a|^power (√|a| when root), times sign(a) when odd.
+template <class V>
+V factor(V a, int power, bool odd, bool root = false) {
+  V m = V{} + 1.0;
+  if (root && power > 0)
+    m = lane_sqrt(lane_abs(a));
+  else
+    for (int i = 0; i < power; ++i) m *= lane_abs(a);
+  if (odd && power > 0) m = a < V{} ? -m : (a > V{} ? m : V{});
   return m;
 }
 
-double term(double a, double a_rate) {
+template <class V>
+V term(V a, V a_rate) {
   return factor(a, 1, true) * factor(a_rate, 1, false);
 }
 
@@ -37,7 +65,7 @@ hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
   return {hystbench::correlation(r.e, phi)};
 }
 
-class ProposedTerm : public hystbench::Effect {
+class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 1, hystbench::EffectDrive::StageInput> {
  public:
   static hystbench::EffectInfo info() {
     hystbench::EffectInfo i;
@@ -51,19 +79,40 @@ class ProposedTerm : public hystbench::Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const hystbench::SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    const double c = p[0];
-    if (!std::isfinite(c)) return false;
-    if (c == 0.0) return true;  // neutral: the signal is left exactly as it was
-    if (!(ctx.sample_time > 0.0) || !ctx.stage_input || ctx.stage_input->size() != signal.size()) return false;
-    const Eigen::VectorXd& a = *ctx.stage_input;
-    double previous = a.size() ? a[0] : 0.0;  // no rate before the record
-    for (Eigen::Index k = 0; k < signal.size(); ++k) {
-      signal[k] += c * term(a[k], (a[k] - previous) / ctx.sample_time);
-      previous = a[k];
-    }
-    return signal.allFinite();
+  struct Aux {
+    double ts;
+  };
+  static Aux aux(double ts) { return {ts}; }
+  static constexpr bool kEarlyExit = true;
+
+  static hystbench::EffectSetup setup(std::span<const double> p, double ts, std::array<double, 1>& c) {
+    if (!std::isfinite(p[0]) || !(ts > 0.0)) return hystbench::EffectSetup::Invalid;
+    if (p[0] == 0.0) return hystbench::EffectSetup::PassThrough;  // neutral: the signal as it was
+    c = {p[0]};
+    return hystbench::EffectSetup::Run;
+  }
+
+  template <class V>
+  struct State {
+    V previous{};
+    V finite{};  // 0 while every output is finite
+    bool started = false;  // no rate before the record
+  };
+
+  template <class V, class Drive>
+  static V sample(const std::array<V, 1>& c, const Aux& aux, State<V>& s, V signal, [[maybe_unused]] Drive drive) {
+    const V a = drive;
+    const V rate = s.started ? (a - s.previous) / aux.ts : V{};
+    s.previous = a;
+    s.started = true;
+    const V out = signal + c[0] * term(a, rate);
+    s.finite += out * 0.0;
+    return out;
+  }
+
+  template <class V>
+  static V health(const std::array<V, 1>&, const State<V>& s) {
+    return s.finite;
   }
 };
 }  // namespace

@@ -11,7 +11,7 @@ set encoding utf8
 acf_bound = 0.02355206997
 ccf_bound = 0.02355206997
 set grid lt 1 lc rgb "#e0e0e0" lw 1
-set key top right opaque samplen 2
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set ylabel "Correlation"
 set xtics 5
 set mxtics 5
@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Current model hysteresis,feedback_hysteresis,arx" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.04490185401:0.04490185401]
+  set yrange [-0.04503713803:0.04503713803]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
