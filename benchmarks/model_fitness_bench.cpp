@@ -120,6 +120,34 @@ BENCHMARK_CAPTURE(BM_ModelProblem, feedback_batched, true, kFeedback, &kFeedback
     ->Name("BM_FeedbackModelProblemBatched")
     ->Apply(feedback_size);
 
+// The global stage of a diagnosis: two candidate fits side by side (an
+// outer team of two threads, as a diagnosis runs its candidates), each
+// evaluating a batch of the oscillator's chain on the screening problem
+// (16 384 samples, 5 sub-steps) in a nested team of its own. OpenMP starts
+// the nested teams' threads anew each time, so this is where buffers that
+// live per thread, or per block, are paid for again and again.
+void BM_FeedbackScreeningSideBySide(benchmark::State& state) {
+  const Eigen::Index n = 16384, p = 32;
+  const auto data = sine_data(n);
+  auto model = hystbench::Model::parse(kFeedback);
+  model.set_substeps(5);
+  const hystbench::ModelProblem problem(model, data);
+  const Eigen::MatrixXd X = active_candidates(model, kFeedbackChain, p);
+  Eigen::MatrixXd f(p, 2);
+  const int levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(2);
+  for (auto _ : state) {
+#pragma omp parallel for num_threads(2)
+    for (int fit = 0; fit < 2; ++fit) problem.evaluate(X, f.col(fit));
+    benchmark::DoNotOptimize(f.data());
+  }
+  omp_set_max_active_levels(levels);
+  if (!f.allFinite()) state.SkipWithError("a candidate diverged");
+  state.counters["ns_per_sample_candidate"] = benchmark::Counter(
+      double(2 * n * p), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_FeedbackScreeningSideBySide)->UseRealTime()->Unit(benchmark::kMillisecond);
+
 // Chains of the effects batched last, each run one candidate at a time
 // (BM_NAMEModelProblemScalar) and in blocks (BM_NAMEModelProblemBatched) at
 // N = 10 000, 32 candidates, one thread.

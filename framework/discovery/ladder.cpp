@@ -12,12 +12,6 @@
 namespace hystbench {
 namespace {
 
-LadderStep make_step(const Diagnosis& d) {
-  LadderStep s{d.model, d.x, d.errors};
-  s.bic = d.bic;
-  return s;
-}
-
 // Where the role of a removed effect went: its resonance, now drawn by an
 // effect of `after` within 10 % of its frequency (with the mode's physical
 // reading), or a rival of the catalog that can carry it.
@@ -141,7 +135,7 @@ void climb(Ladder& ladder, const LadderStep& next, const ModelData& data, const 
   if (!next.added.empty() && !next.model.has(next.added))
     diagnose_options.exclude.push_back(next.added);
   Diagnosis d = diagnose(next.model, next.x, data, diagnose_options);
-  LadderStep s = make_step(d);  // the diagnosis polished the fit: that fit is the rung
+  LadderStep s = rung_of(d);  // the diagnosis polished the fit: that fit is the rung
   s.added = next.added;
   s.removed = next.removed;
   s.evidence = next.evidence;
@@ -166,6 +160,12 @@ Ladder run(Ladder ladder, const ModelData& data, const DiscoverOptions& o,
 }
 
 }  // namespace
+
+LadderStep rung_of(const Diagnosis& d) {
+  LadderStep s{d.model, d.x, d.errors};
+  s.bic = d.bic;
+  return s;
+}
 
 bool Ladder::finished() const {
   return stopped_by_limit || (!diagnoses.empty() && diagnoses.back().winner() == nullptr);

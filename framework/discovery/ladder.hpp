@@ -42,6 +42,9 @@ struct LadderStep {
   std::vector<TriedSubModel> sub_models = {};  // tried with one effect less (pruning.hpp)
 };
 
+// The rung a diagnosis examined: its model, its fit and that fit's errors.
+LadderStep rung_of(const Diagnosis& d);
+
 struct Ladder {
   std::vector<LadderStep> steps;
   std::vector<Diagnosis> diagnoses;  // one per step: diagnoses[k] examined steps[k]

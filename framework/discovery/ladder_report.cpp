@@ -287,9 +287,7 @@ nlohmann::json checkpoint_context(const LadderContext& ctx) {
 std::filesystem::path write_first_step(const std::filesystem::path& dir, const Diagnosis& d,
                                        const LadderContext& ctx) {
   Ladder ladder;
-  LadderStep first{d.model, d.x, d.errors};
-  first.bic = d.bic;
-  ladder.steps.push_back(std::move(first));
+  ladder.steps.push_back(rung_of(d));
   ladder.diagnoses.push_back(d);
   const auto path = dir / "checkpoint.json";
   write_file_atomic(path, checkpoint_json(ladder, first_step_context(ctx)).dump(1) + "\n");

@@ -6,9 +6,55 @@
 // polynomials, and about two orders of magnitude closer to a band-limited
 // input than linear interpolation (holding the input constant over a sample
 // is worse still). Positions are in samples: sample k sits at position k.
+#include <cstddef>
+#include <span>
+#include <vector>
+
 #include "framework/core/eigen.hpp"
 
 namespace hystbench {
+
+// The second derivatives m (per sample²) of the not-a-knot spline through
+// the evenly spaced samples w, for any element type with double arithmetic:
+// a vector of several records' samples (a block of candidates) gets in each
+// lane exactly what a double gets. `super` is scratch (the Thomas
+// algorithm's modified super-diagonal, the same for every record of w's
+// length).
+template <class V>
+void spline_second_derivatives(std::span<const V> w, std::span<V> m, std::vector<double>& super) {
+  const std::size_t n = w.size();
+  if (n < 3) {  // constant or linear
+    for (auto& v : m) v = V{} + 0.0;
+    return;
+  }
+  const auto d = [&](std::size_t i) { return w[i - 1] - 2.0 * w[i] + w[i + 1]; };
+  if (n == 3) {  // the parabola through the three points
+    for (auto& v : m) v = d(1);
+    return;
+  }
+  // Unit spacing: M[i-1] + 4 M[i] + M[i+1] = 6 d[i], d[i] = w[i-1] - 2 w[i] + w[i+1],
+  // for i = 1..n-2. Not-a-knot (third derivative continuous at samples 1 and
+  // n-2) gives M[0] = 2 M[1] - M[2], which turns the first equation into
+  // M[1] = d[1]; likewise M[n-2] = d[n-2] at the other end.
+  const std::size_t last = n - 2;
+  super.resize(n);
+  // Row 1: diagonal 1, super-diagonal 0, right-hand side d[1].
+  super[1] = 0.0;
+  m[1] = d(1);
+  for (std::size_t i = 2; i <= last; ++i) {
+    const bool end = i == last;
+    const double sub = end ? 0.0 : 1.0;
+    const double diag = end ? 1.0 : 4.0;
+    const double sup = end ? 0.0 : 1.0;
+    const V rhs = end ? d(i) : 6.0 * d(i);
+    const double denom = diag - sub * super[i - 1];
+    super[i] = sup / denom;
+    m[i] = (rhs - sub * m[i - 1]) / denom;
+  }
+  for (std::size_t i = last - 1; i >= 1; --i) m[i] -= super[i] * m[i + 1];
+  m[0] = 2.0 * m[1] - m[2];
+  m[n - 1] = 2.0 * m[n - 2] - m[n - 3];
+}
 
 class UniformCubicSpline {
  public:
@@ -41,7 +87,7 @@ class UniformCubicSpline {
  private:
   Eigen::VectorXd w_;
   Eigen::VectorXd m_;
-  Eigen::VectorXd scratch_;
+  std::vector<double> scratch_;
 };
 
 }  // namespace hystbench

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "framework/core/error.hpp"
+#include "framework/core/scratch_pool.hpp"
 #include "framework/core/text.hpp"
 
 namespace hystbench {
@@ -238,6 +239,10 @@ constexpr Eigen::Index kLaneChunk = 256;
 
 using LaneRuns = std::vector<std::unique_ptr<LaneRun>>;
 
+struct LaneBuffers {
+  std::vector<LaneVector> signal, stage_input;
+};
+
 // One chunk of a block through the chain, as simulate() runs a record: each
 // stage sees what entered it as its stage input (copied only for a stage
 // with an effect that reads it), the gain between input and nonlinearity.
@@ -307,7 +312,15 @@ void Model::simulate_lanes(const Eigen::Ref<const Eigen::MatrixXd>& X, const Mod
   const Eigen::Index n = data.size();
   const bool timed = data.t.size() == n;
   const Eigen::Index chunk = whole ? std::max<Eigen::Index>(n, 1) : kLaneChunk;
-  std::vector<LaneVector> buffer(std::size_t(std::min(n, chunk))), stage_buffer(buffer.size());
+  // Reused: with an effect that takes the whole record these are megabytes,
+  // and fresh ones for every block cost page faults (the chain writes each
+  // sample before it reads it).
+  static ScratchPool<LaneBuffers> pool;
+  const auto buffers = pool.lend();
+  std::vector<LaneVector>& buffer = buffers->signal;
+  std::vector<LaneVector>& stage_buffer = buffers->stage_input;
+  buffer.resize(std::size_t(std::min(n, chunk)));
+  stage_buffer.resize(buffer.size());
   for (Eigen::Index begin = 0; begin < n; begin += chunk) {
     const auto m = std::size_t(std::min(chunk, n - begin));
     const std::span<LaneVector> y(buffer.data(), m), stage_input(stage_buffer.data(), m);

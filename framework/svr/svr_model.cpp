@@ -18,14 +18,13 @@ void fill_row(const Eigen::VectorXd& xs, const Eigen::VectorXd& ws, Eigen::Index
               double rate_step, Eigen::Ref<Eigen::VectorXd> row) {
   for (int i = 0; i <= lags.m; ++i) row[i] = xs[k - i];
   for (int i = 0; i <= lags.n; ++i) row[lags.m + 1 + i] = ws[k - i];
-  if (lags.input_rate) row[lags.m + lags.n + 2] = std::tanh((xs[k] - xs[k - 1]) / rate_step);
+  if (lags.input_rate) row[lags.m + lags.n + 2] = rate_regressor(xs[k - 1], xs[k], rate_step);
 }
 
-// The largest step of a scaled input, so the training record's rates fill
-// tanh's steep part; faster tests saturate it instead of leaving the
-// kernel's reach.
-double largest_step(const Eigen::VectorXd& xs) {
-  if (xs.size() < 2) return 1.0;
+// The largest step of a scaled input, so that the training record's rates
+// fill tanh's steep part; 1 when the model has no rate regressor.
+double rate_step_of(const Eigen::VectorXd& xs, const SvrLags& lags) {
+  if (!lags.input_rate || xs.size() < 2) return 1.0;
   const double step = (xs.tail(xs.size() - 1) - xs.head(xs.size() - 1)).cwiseAbs().maxCoeff();
   return step > 0.0 ? step : 1.0;
 }
@@ -43,7 +42,7 @@ void SvrHammerstein::regression_rows(const Eigen::VectorXd& x, const Eigen::Vect
                                      Eigen::MatrixXd& rows, Eigen::VectorXd& targets) {
   const Eigen::VectorXd xs = to_unit(x, MinMaxScale::of(x)), ys = to_unit(y, MinMaxScale::of(y));
   const Eigen::Index first = lags.warmup() - 1, count = ys.size() - 1 - first;
-  const double rate_step = largest_step(xs);
+  const double rate_step = rate_step_of(xs, lags);
   rows.resize(std::max<Eigen::Index>(count, 0), lags.dimension());
   targets.resize(rows.rows());
   Eigen::VectorXd row(rows.cols());
@@ -83,8 +82,8 @@ SvrHammerstein SvrHammerstein::fit_stage1(const Eigen::VectorXd& x, const Eigen:
   Eigen::VectorXd targets;
   regression_rows(x, y, lags, rows, targets);
   if (max_rows > 0) decimate(rows, targets, max_rows);
-  const double rate_step = lags.input_rate ? largest_step(to_unit(x, xs)) : 1.0;
-  return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys, rate_step);
+  return SvrHammerstein(SvrRegressor::train(rows, targets, h, where), lags, xs, ys,
+                        rate_step_of(to_unit(x, xs), lags));
 }
 
 ArxSelection SvrHammerstein::fit_stage2(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int p_max,

@@ -34,6 +34,11 @@ struct SvrLags {
   int warmup() const { return std::max({m, n, input_rate ? 1 : 0}) + 1; }  // samples taken as measured
 };
 
+// The rate regressor of a step from scaled input a to b: bounded, so that a
+// test faster than the training record saturates it instead of leaving the
+// kernel's reach.
+inline double rate_regressor(double a, double b, double step) { return std::tanh((b - a) / step); }
+
 // How stage 2 sees stage 1 on the scan: its free run (the signal the whole
 // model passes on when simulated), or its one-step prediction from the
 // measured outputs (series-parallel, as stage 1 was trained).
@@ -83,7 +88,7 @@ class SvrHammerstein {
   const MinMaxScale& output_scale() const { return y_scale_; }
   const SvrRegressor& regressor() const { return svr_; }
   // The rate regressor of a step from scaled input a to b (0 without one).
-  double rate_feature(double a, double b) const { return std::tanh((b - a) / rate_step_); }
+  double rate_feature(double a, double b) const { return rate_regressor(a, b, rate_step_); }
   const std::optional<ArxFit>& arx() const { return arx_; }
 
   nlohmann::json to_json() const;

@@ -22,6 +22,7 @@
 #include <deque>
 #include <vector>
 
+#include "framework/core/scratch_pool.hpp"
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
 
@@ -166,7 +167,7 @@ class Delay : public Effect {
     LaneMask running{};
 
     void run(std::span<LaneVector> signal, const LaneChunk& chunk) override {
-      past_.insert(past_.end(), signal.begin(), signal.end());
+      past_->insert(past_->end(), signal.begin(), signal.end());
       for (int l = 0; l < kEffectLanes; ++l) {
         if (!running[l]) continue;
         const Weights& c = weights[l];
@@ -181,8 +182,17 @@ class Delay : public Effect {
 
    private:
     // Input j of lane l, 0 before the record.
-    double at(Eigen::Index j, int l) const { return j >= 0 ? past_[std::size_t(j)][l] : 0.0; }
-    std::vector<LaneVector> past_;  // every input of the block so far
+    double at(Eigen::Index j, int l) const { return j >= 0 ? (*past_)[std::size_t(j)][l] : 0.0; }
+    // Every input of the block so far. Borrowed, so that its memory outlives
+    // the block: grown afresh in every block it cost copies and page faults.
+    using Inputs = std::vector<LaneVector>;
+    static ScratchPool<Inputs>::Lease no_inputs() {
+      static ScratchPool<Inputs> pool;
+      auto inputs = pool.lend();
+      inputs->clear();
+      return inputs;
+    }
+    ScratchPool<Inputs>::Lease past_ = no_inputs();
   };
 
   static double sample(const Weights& c, History& h, double v) {

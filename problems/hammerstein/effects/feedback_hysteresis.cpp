@@ -37,6 +37,7 @@
 #include <numbers>
 #include <vector>
 
+#include "framework/core/scratch_pool.hpp"
 #include "framework/core/text.hpp"
 #include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
@@ -355,19 +356,34 @@ class FeedbackHysteresis : public Effect {
 
     void run_together(std::span<LaneVector> signal);
     void fit_splines(std::span<const LaneVector> input);
+    double spline_value(std::span<const LaneVector> input, Eigen::Index k, int l, double s) const;
     void fill_inputs(std::span<const LaneVector> input, Eigen::Index k, std::vector<LaneVector>& wv) const;
     void redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i, Eigen::Index k,
                     const std::vector<LaneVector>& wv, std::span<const LaneVector> input) const;
     bool check_divergence(const StateOf<LaneVector>& x);
+
+    // Record-long buffers, reused from one block to the next: a fit runs
+    // thousands of blocks, and fresh megabyte buffers for each cost about
+    // as much in page faults as the coarse integration itself. A block
+    // fills them before it reads them.
+    struct Scratch {
+      std::vector<LaneVector> input;
+      std::vector<LaneVector> second;  // the splines' second derivatives
+      std::vector<double> super;       // the spline solve's scratch
+      std::vector<UniformCubicSpline::Weights> weights;
+    };
+    static ScratchPool<Scratch>& scratch() {
+      static ScratchPool<Scratch> pool;
+      return pool;
+    }
 
     InputHold hold_;
     std::array<Coefficients, kEffectLanes> c_{};
     LaneMask running_{}, failed_{};
     int sub_ = 0;         // the first running lane's sub-step count (0: none runs)
     bool shared_ = true;  // every running lane has it
-    std::array<UniformCubicSpline, kEffectLanes> splines_;
-    std::vector<LaneVector> second_;  // the splines' second derivatives, interleaved
-    std::vector<UniformCubicSpline::Weights> weights_;
+    ScratchPool<Scratch>::Lease lease_ = scratch().lend();
+    Scratch& s_ = *lease_;
   };
 
   // The streaming form's state: the oscillator and the previous input.
@@ -394,7 +410,8 @@ class FeedbackHysteresis : public Effect {
 };
 
 void FeedbackHysteresis::Block::run_together(std::span<LaneVector> signal) {
-  const std::vector<LaneVector> input(signal.begin(), signal.end());
+  s_.input.assign(signal.begin(), signal.end());
+  const std::span<const LaneVector> input(s_.input);
   if (hold_ == InputHold::Spline) fit_splines(input);
   Rates<LaneVector> r{};
   LaneBits keep{};  // lanes that do not run keep their signal
@@ -420,18 +437,21 @@ void FeedbackHysteresis::Block::run_together(std::span<LaneVector> signal) {
 }
 
 void FeedbackHysteresis::Block::fit_splines(std::span<const LaneVector> input) {
-  Eigen::VectorXd lane(Eigen::Index(input.size()));
-  second_.assign(input.size(), LaneVector{});
-  for (int l = 0; l < kEffectLanes; ++l) {
-    if (!running_[l]) continue;
-    for (Eigen::Index k = 0; k < lane.size(); ++k) lane[k] = input[std::size_t(k)][l];
-    splines_[l].fit(lane);
-    const Eigen::VectorXd& m = splines_[l].second_derivatives();
-    for (Eigen::Index k = 0; k < lane.size(); ++k) second_[std::size_t(k)][l] = m[k];
-  }
-  weights_.resize(std::size_t(2 * sub_ + 1));
+  s_.second.resize(input.size());
+  spline_second_derivatives<LaneVector>(input, s_.second, s_.super);
+  s_.weights.resize(std::size_t(2 * sub_ + 1));
   for (int j = 0; j <= 2 * sub_; ++j)
-    weights_[std::size_t(j)] = UniformCubicSpline::weights(double(j) / double(2 * sub_));
+    s_.weights[std::size_t(j)] = UniformCubicSpline::weights(double(j) / double(2 * sub_));
+}
+
+// Lane l's spline at position k + s, as UniformCubicSpline::value computes it.
+double FeedbackHysteresis::Block::spline_value(std::span<const LaneVector> input, Eigen::Index k, int l,
+                                               double s) const {
+  const auto last = Eigen::Index(input.size()) - 1;
+  if (k >= last) return input[std::size_t(last)][l];
+  const UniformCubicSpline::Weights c = UniformCubicSpline::weights(s);
+  const auto i = std::size_t(k);
+  return c.w0 * input[i][l] + c.w1 * input[i + 1][l] + c.m0 * s_.second[i][l] + c.m1 * s_.second[i + 1][l];
 }
 
 // The input of every lane at the fractions advance() reads, computed as
@@ -441,8 +461,8 @@ void FeedbackHysteresis::Block::fill_inputs(std::span<const LaneVector> input, E
   const LaneVector w0 = input[std::size_t(k)], w1 = input[std::size_t(k + 1)];
   for (int j = 0; j <= 2 * sub_; ++j) {
     if (hold_ == InputHold::Spline) {
-      const UniformCubicSpline::Weights& c = weights_[std::size_t(j)];
-      const LaneVector m0 = second_[std::size_t(k)], m1 = second_[std::size_t(k + 1)];
+      const UniformCubicSpline::Weights& c = s_.weights[std::size_t(j)];
+      const LaneVector m0 = s_.second[std::size_t(k)], m1 = s_.second[std::size_t(k + 1)];
       wv[std::size_t(j)] = c.w0 * w0 + c.w1 * w1 + c.m0 * m0 + c.m1 * m1;
     } else {
       wv[std::size_t(j)] = hold_ == InputHold::Zoh ? w0 : w0 + double(j) / double(2 * sub_) * (w1 - w0);
@@ -459,7 +479,7 @@ void FeedbackHysteresis::Block::redo_kinks(const StateOf<LaneVector>& x, StateOf
     const State from{x.y[l], x.v[l], x.z[l]}, to{next.y[l], next.v[l], next.z[l]};
     if (!has_kink(c_[l], from, to)) continue;
     const auto w_at = [&](double s) {
-      if (hold_ == InputHold::Spline) return splines_[l].value(k, UniformCubicSpline::weights(s));
+      if (hold_ == InputHold::Spline) return spline_value(input, k, l, s);
       return held_value(hold_, input[std::size_t(k)][l], input[std::size_t(k + 1)][l], s);
     };
     const double w_start = wv[std::size_t(2 * i)][l], w_end = wv[std::size_t(2 * i + 2)][l];
