@@ -79,7 +79,13 @@ class UniformCubicSpline {
   // Value at position k + s with the precomputed weights of s.
   double value(Eigen::Index k, const Weights& c) const {
     if (k + 1 >= size()) return w_[size() - 1];
-    return c.w0 * w_[k] + c.w1 * w_[k + 1] + c.m0 * m_[k] + c.m1 * m_[k + 1];
+    return blend(c, w_[k], w_[k + 1], m_[k], m_[k + 1]);
+  }
+  // The value between samples w0 and w1 with second derivatives m0 and m1,
+  // for any element type: a lane of a vector gets exactly what a double gets.
+  template <class V>
+  static V blend(const Weights& c, V w0, V w1, V m0, V m1) {
+    return c.w0 * w0 + c.w1 * w1 + c.m0 * m0 + c.m1 * m1;
   }
   // Value at `position` (in samples), held constant outside [0, size-1].
   double operator()(double position) const;

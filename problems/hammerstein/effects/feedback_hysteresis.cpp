@@ -449,9 +449,9 @@ double FeedbackHysteresis::Block::spline_value(std::span<const LaneVector> input
                                                double s) const {
   const auto last = Eigen::Index(input.size()) - 1;
   if (k >= last) return input[std::size_t(last)][l];
-  const UniformCubicSpline::Weights c = UniformCubicSpline::weights(s);
   const auto i = std::size_t(k);
-  return c.w0 * input[i][l] + c.w1 * input[i + 1][l] + c.m0 * s_.second[i][l] + c.m1 * s_.second[i + 1][l];
+  return UniformCubicSpline::blend(UniformCubicSpline::weights(s), input[i][l], input[i + 1][l],
+                                   s_.second[i][l], s_.second[i + 1][l]);
 }
 
 // The input of every lane at the fractions advance() reads, computed as
@@ -461,9 +461,8 @@ void FeedbackHysteresis::Block::fill_inputs(std::span<const LaneVector> input, E
   const LaneVector w0 = input[std::size_t(k)], w1 = input[std::size_t(k + 1)];
   for (int j = 0; j <= 2 * sub_; ++j) {
     if (hold_ == InputHold::Spline) {
-      const UniformCubicSpline::Weights& c = s_.weights[std::size_t(j)];
-      const LaneVector m0 = s_.second[std::size_t(k)], m1 = s_.second[std::size_t(k + 1)];
-      wv[std::size_t(j)] = c.w0 * w0 + c.w1 * w1 + c.m0 * m0 + c.m1 * m1;
+      wv[std::size_t(j)] = UniformCubicSpline::blend(s_.weights[std::size_t(j)], w0, w1, s_.second[std::size_t(k)],
+                                                     s_.second[std::size_t(k + 1)]);
     } else {
       wv[std::size_t(j)] = hold_ == InputHold::Zoh ? w0 : w0 + double(j) / double(2 * sub_) * (w1 - w0);
     }
