@@ -125,7 +125,10 @@ TEST(FeedbackHysteresis, SubstepsConvergeOnAMultisineWithHysteresis) {
   const double rms = std::sqrt(y40.squaredNorm() / double(d.size()));
   EXPECT_GT(rms, 0.1);
   EXPECT_LT((y20 - y40).cwiseAbs().maxCoeff(), 1e-6 * rms);
-  EXPECT_EQ(ydefault, y20) << "the default is 20 sub-steps";
+  // The default takes 3 sub-steps here (0.1 rad of the fastest linear mode
+  // each); the strong loop moves faster, and the error is 5e-5 of the RMS.
+  EXPECT_LT((ydefault - y40).cwiseAbs().maxCoeff(), 1e-4 * rms);
+  EXPECT_GT((ydefault - y40).cwiseAbs().maxCoeff(), (y20 - y40).cwiseAbs().maxCoeff()) << "fewer than 20";
   // Hysteresis changes the response noticeably.
   Eigen::VectorXd ylin;
   ASSERT_TRUE(m20.simulate(params(25.0, 0.016, 0.0, 0.53, -0.73, 1.5), d, ylin));
