@@ -10,9 +10,11 @@
 #   - cubic stiffness: propose on a fitted msd ranks x³ first in the dynamics;
 #     discover --plugin puts the generated effect (msd with the force) in
 #     msd's place, with the same result;
-#   - a play operator beside the gain and a drive-dependent stiffness: propose
-#     on a fitted msd ranks play(v, 25 %) and |v|·x first, and says why it
-#     writes no effect for them.
+#   - a drive-dependent stiffness: propose on a fitted msd ranks |v|·x
+#     first, a product of two signals; its generated force (written with w
+#     = gain·v) takes msd's place with the same result;
+#   - a play operator beside the gain: propose on a fitted msd ranks
+#     play(v, 25 %) first, and says why it writes no effect for it.
 # benchmarks/beyond_catalog.sh runs the same at full size.
 set -euo pipefail
 build_dir=$1
@@ -77,18 +79,22 @@ discover_with_effect rate rate.csv "$seed_chain"
 grep -q "^  1\. dynamics: x³  " cubic.txt || fail "cubic_stiffness: the first proposal is not dynamics x³: $(cat cubic.txt)"
 build_effect cubic proposed_term
 discover_with_effect cubic cubic.csv msd
-# A play operator beside the gain and a spring that stiffens with the drive:
-# terms of the library beyond one stage's signal, proposed with no effect
-# written (a generated effect has only the f(a)·g(a') form), and said so.
-for case in "parallel_play|static: play(v, 25 %)" "drive_stiffness|dynamics: |v|·x"; do
-  name=${case%%|*} term=${case#*|}
-  "$planted" "$name" "$name.csv" 4000
-  "$hystbench" fit --data "$name.csv" --model msd --out "$name-msd" >/dev/null
-  "$hystbench" propose --data "$name.csv" --fit "$name-msd/fit.json" --out "$name" > "$name.txt"
-  grep -qF "  1. $term  " "$name.txt" || fail "$name: the first proposal is not $term: $(cat "$name.txt")"
-  grep -q "^no effect written: the term .* write its effect by hand" "$name.txt" ||
-    fail "$name: propose does not say why no effect was written: $(cat "$name.txt")"
-  grep -q "No effect was written" "$name/proposals.md" || fail "$name: proposals.md does not say no effect was written"
-  [[ ! -e "$name/effect" ]] || fail "$name: an effect folder was written for a term without a generated form"
-done
+# A spring that stiffens with the drive: a product of two signals, written
+# as a force of the resonance's output and its input.
+"$planted" drive_stiffness drive.csv 4000
+"$hystbench" fit --data drive.csv --model msd --out drive-msd >/dev/null
+"$hystbench" propose --data drive.csv --fit drive-msd/fit.json --out drive > drive.txt
+grep -qF "  1. dynamics: |v|·x  " drive.txt || fail "drive_stiffness: the first proposal is not |v|·x: $(cat drive.txt)"
+build_effect drive proposed_term
+discover_with_effect drive drive.csv msd
+# A play operator beside the gain: a term of the library that no generated
+# effect has, proposed with no effect written, and said so.
+"$planted" parallel_play play.csv 4000
+"$hystbench" fit --data play.csv --model msd --out play-msd >/dev/null
+"$hystbench" propose --data play.csv --fit play-msd/fit.json --out play > play.txt
+grep -qF "  1. static: play(v, 25 %)  " play.txt || fail "parallel_play: the first proposal is not the play operator: $(cat play.txt)"
+grep -q "^no effect written: the term .* write its effect by hand" play.txt ||
+  fail "parallel_play: propose does not say why no effect was written: $(cat play.txt)"
+grep -q "No effect was written" play/proposals.md || fail "parallel_play: proposals.md does not say no effect was written"
+[[ ! -e play/effect ]] || fail "parallel_play: an effect folder was written for a term without a generated form"
 echo "beyond_catalog: every planted case found and proposed; the generated effects fitted"

@@ -100,6 +100,22 @@ TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
   for (Eigen::Index j = 8; j < 16; ++j) EXPECT_EQ(f[j], std::numeric_limits<double>::infinity()) << j;
 }
 
+// An output finite but too large to square (here a gain of 1e160) is a
+// diverged candidate: its SSE is infinite both ways, not NaN (inf times the
+// held-out samples' weight 0), which no optimizer can rank.
+TEST(EffectLanes, AnOutputTooLargeToSquareIsInfiniteNotNan) {
+  const Model model = Model::parse("msd");
+  const ModelData data = lane_record(600);
+  const ModelProblem problem(model, data);
+  Eigen::MatrixXd X = model.neutral().replicate(1, 3);
+  X(0, 1) = 1e160;
+  Eigen::VectorXd f(3);
+  problem.evaluate(X, f);
+  EXPECT_TRUE(std::isfinite(f[0]));
+  EXPECT_EQ(f[1], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(problem.sse(X.col(1)), std::numeric_limits<double>::infinity());
+}
+
 TEST(EffectLanes, DivergingAndInvalidCandidatesAreInfiniteInTheirLaneOnly) {
   const Model model = Model::parse("hysteresis,asymmetry,msd,arx");
   const ModelData data = lane_record();

@@ -173,24 +173,44 @@ TEST(EffectSource, NamesTheTermAndRefusesAForceWithoutMsd) {
   ProposedTerm of_w = t;
   of_w.term = {TermStage::Static, {{TermSignal::StaticOutput, false, 3, true}}};
   const std::string w_source = proposed_effect_source(of_w, {"stiff_w", "data.csv", "hysteresis,msd"});
-  EXPECT_NE(w_source.find("const V a = signal;"), std::string::npos);  // built from w itself
+  EXPECT_NE(w_source.find("const V a = signal, b = V{};"), std::string::npos);  // built from w itself
   EXPECT_NE(w_source.find("KernelEffect<StiffW, 1, hystbench::EffectDrive::None>"), std::string::npos);  // batched
   EXPECT_NE(w_source.find("c·w³"), std::string::npos);
   EXPECT_NE(w_source.find("-0.02, 0.02, 0, -2, 0, \"\""), std::string::npos);  // c in units of y⁻²
+  // A product of two signals the block sees: v and w in the static block.
+  ProposedTerm static_product = t;
+  static_product.term = {TermStage::Static, {{TermSignal::Drive, true, 1, false}, {TermSignal::StaticOutput, false, 1, true}}};
+  const std::string p_source = proposed_effect_source(static_product, {"rate_w", "data.csv", "asymmetry,msd"});
+  EXPECT_NE(p_source.find("const V a = signal, b = V{} + drive;"), std::string::npos) << p_source;
+  EXPECT_NE(p_source.find("KernelEffect<RateW, 1, hystbench::EffectDrive::StageInput>"), std::string::npos);
+  EXPECT_NE(p_source.find("factor(a, 1, true) * factor(a_rate, 0, false) * factor(b_rate, 1, false)"),
+            std::string::npos);
+  EXPECT_NE(p_source.find("-0.02, 0.02, 0, 0, -1, \"s\""), std::string::npos);  // c·|v'|·w in w: units s/u
+  // A force of the drive and the resonance: with the gain alone in the
+  // static block it is written with w = gain·v, c divided by the gain.
   ProposedTerm cross = t;
-  cross.term = {TermStage::Dynamics, {{TermSignal::Drive, false, 1, true}, {TermSignal::Resonance, false, 1, true}}};
-  EXPECT_THROW(
-      {
-        try {
-          proposed_effect_source(cross, {"stiff", "data.csv", "msd"});
-        } catch (const InputError& e) {
-          EXPECT_NE(std::string(e.what()).find("v·x is not a power of one signal of the dynamics block"),
-                    std::string::npos)
-              << e.what();
-          throw;
-        }
-      },
-      InputError);
+  cross.term = {TermStage::Dynamics, {{TermSignal::Drive, false, 1, false}, {TermSignal::Resonance, false, 1, true}}};
+  const std::string c_source = proposed_effect_source(cross, {"stiff", "data.csv", "msd", -2.0});
+  EXPECT_NE(c_source.find("c·x·|w|"), std::string::npos) << c_source;
+  EXPECT_NE(c_source.find("the term |v|·x at the dynamics stage"), std::string::npos);
+  EXPECT_NE(c_source.find("-0.01, 0.01, 0, -1, 0, \"\""), std::string::npos);  // 0.002 / |−2|, in units of y⁻¹
+  EXPECT_NE(c_source.find("EffectDrive::StageInput"), std::string::npos);
+  const auto refusal = [&](const ProposedTerm& term, const std::string& model) {
+    try {
+      proposed_effect_source(term, {"stiff", "data.csv", model});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no refusal");
+  };
+  EXPECT_NE(refusal(cross, "asymmetry,msd").find("|v|·x pairs the drive v with the resonance's output"),
+            std::string::npos);
+  ProposedTerm at_output = t;
+  at_output.term = {TermStage::Output, {{TermSignal::Resonance, false, 1, true}, {TermSignal::Output, true, 1, true}}};
+  EXPECT_NE(refusal(at_output, "msd").find("which an effect of that block does not see"), std::string::npos);
+  ProposedTerm play = t;
+  play.term = {TermStage::Static, {{TermSignal::Play, false, 1, true, 0.25}}};
+  EXPECT_NE(refusal(play, "msd").find("is neither a power of one signal"), std::string::npos);
   ProposedTerm root = t;
   root.term = {TermStage::Output, {{TermSignal::Output, false, 1, true, 0.0, true}}};
   const std::string root_source = proposed_effect_source(root, {"orifice", "data.csv", "msd"});

@@ -59,10 +59,12 @@ std::string model_with(const Model& model, const std::string& name, bool replace
 
 // The first term as an effect plugin in DIR/effect, when it can be written.
 GeneratedEffect write_effect(const Proposal& p, const ProposeCommandOptions& o, const DataSource& source,
-                             const Model& model, const std::filesystem::path& dir) {
+                             const FitRecord& fit, const std::filesystem::path& dir) {
   if (p.terms.empty()) return {};
+  const Model& model = fit.model;
   try {
-    const std::string text = proposed_effect_source(p.terms[0], {o.name, source.file_name(), model.text()});
+    const std::string text =
+        proposed_effect_source(p.terms[0], {o.name, source.file_name(), model.text(), fit.x[0]});
     create_output_folder(dir / "effect");
     write_file_atomic(dir / "effect" / (o.name + ".cpp"), text);
     write_file_atomic(dir / "effect" / "CMakeLists.txt", proposed_effect_cmake(o.name));
@@ -96,7 +98,7 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
               std::to_string(data.size()) + " samples)");
   const Proposal p = propose_terms(fit.model, fit.x, data, o.propose);
   status.finish();
-  const GeneratedEffect effect = write_effect(p, o, source, fit.model, dir);
+  const GeneratedEffect effect = write_effect(p, o, source, fit, dir);
   nlohmann::json out = p.to_json();
   out["data"] = source.to_json();
   out["fit"] = o.from_fit;

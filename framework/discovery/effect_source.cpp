@@ -39,20 +39,36 @@ struct StageForm {
   const char* view_member;  // ... as a member of ResidualView
 };
 
-StageForm stage_form(const CandidateTerm& t) {
+// The term as the generated effect computes it: the factors of its block's
+// own signal a and of a's rate, and for a product of two signals those of
+// the second signal b (power 0: no such factor).
+struct WrittenTerm {
+  CandidateTerm term;        // as written (written_term() may put w for v)
+  double coefficient = 0.0;  // normalised units, of the written term
+  TermFactor a, a_rate, b, b_rate;
+  std::string note;          // why the written term differs from the proposed one ("" when it does not)
+
+  bool product() const { return b.power > 0 || b_rate.power > 0; }
+};
+
+StageForm stage_form(const WrittenTerm& w) {
+  const CandidateTerm& t = w.term;
+  // A product reads its second signal from the stage input: v in the static
+  // block, w in the dynamics.
+  const char* other_drive = w.product() ? "StageInput" : "None";
   switch (t.stage) {
     case TermStage::Input:
       return {"Input", "the input (the stage input)", 1, 0, "StageInput", "drive", "the input u", "u"};
     case TermStage::Static:
       // A term of w is built from the signal the effect is handed (the block's
       // output so far), not from the stage input v; the residual view has no w.
-      if (t.own_factor(false).signal == TermSignal::StaticOutput)
+      if (w.a.signal == TermSignal::StaticOutput)
         return {"Nonlinearity", "the static block's output before this effect (the signal it is handed)", 0, 1,
-                "None", "signal", "the input u (the residual view has no w; u stands for it)", "u"};
+                other_drive, "signal", "the input u (the residual view has no w; u stands for it)", "u"};
       return {"Nonlinearity", "the drive (the stage input)", 0, 1, "StageInput", "drive", "the input u", "u"};
     case TermStage::Dynamics:
-      return {"Dynamics", "the resonance's own output (the force depends on the output it drives)", 0, 1, "None",
-              "signal", "the model output", "y_model"};
+      return {"Dynamics", "the resonance's own output (the force depends on the output it drives)", 0, 1,
+              other_drive, "signal", "the model output", "y_model"};
     case TermStage::Output:
       return {"Output", "the dynamics' output (the stage input)", 0, 1, "StageInput", "drive", "the model output",
               "y_model"};
@@ -63,32 +79,32 @@ StageForm stage_form(const CandidateTerm& t) {
 // The physical unit of c: the powers of y and u, and seconds per rate. A
 // root gives c a half power, which EffectParam cannot state: c is then
 // reported in normalised units.
-void unit_powers(const CandidateTerm& t, int& u_power, int& y_power, std::string& unit) {
-  if (t.has_root()) {
+void unit_powers(const WrittenTerm& w, int& u_power, int& y_power, std::string& unit) {
+  if (w.term.has_root()) {
     u_power = y_power = 0;
     unit = "normalised units";
     return;
   }
-  const StageForm f = stage_form(t);
-  const int degree = t.degree();
+  const StageForm f = stage_form(w);
   u_power = f.u_power;
   y_power = f.y_power;
-  const TermSignal a = t.own_factor(false).signal;
-  if (a == TermSignal::Input || a == TermSignal::Drive)  // in units of u; w, x and y are in units of y
-    u_power -= degree;
-  else
-    y_power -= degree;
-  const int q = t.own_factor(true).power;
-  unit = q == 0 ? "" : q == 1 ? "s" : "s^" + std::to_string(q);
+  int seconds = 0;
+  for (const TermFactor& factor : w.term.factors) {
+    const bool of_u = factor.signal == TermSignal::Input || factor.signal == TermSignal::Drive;  // w, x, y: of y
+    (of_u ? u_power : y_power) -= factor.power;
+    if (factor.rate) seconds += factor.power;
+  }
+  unit = seconds == 0 ? "" : seconds == 1 ? "s" : "s^" + std::to_string(seconds);
 }
 
-constexpr const char* kCommon = R"src(// Proposed from data by `hystbench propose`: the term @TERM@ at the @STAGE_NAME@ stage,
+constexpr const char* kCommon = R"src(// Proposed from data by `hystbench propose`: the term @PROPOSED@ at the @STAGE_NAME@ stage,
 // from the residual of the model @MODEL@ fitted to @DATA@. It explained @SHARE@ %
 // of what that fit left; proposed coefficient @COEF@ ± @SE@ (normalised units).
 //
 //   signal[k] += c·@TERM@,   @SYMBOL@' = (@SYMBOL@[k] − @SYMBOL@[k−1]) / Ts,   @SYMBOL@'[0] = 0
 //
-// with @SYMBOL@ @SIGNAL@. c = 0 leaves the signal unchanged.
+// with @SYMBOL@ @SIGNAL@@OTHER_LINE@.
+// c = 0 leaves the signal unchanged.@NOTE@
 // Written as one per-sample kernel (framework/model/kernel_effect.hpp), which
 // gives the effect its batched form: candidates are fitted a block at a time,
 // as the catalog's effects are. Build: see docs/plugins.md (out of the tree: a
@@ -132,19 +148,20 @@ V factor(V a, int power, bool odd, bool root = false) {
   return m;
 }
 
+// The term of the block's own signal a and of b@B_ROLE@.
 template <class V>
-V term(V a, V a_rate) {
-  return factor(a, @P@, @P_ODD@@P_ROOT@) * factor(a_rate, @Q@, @Q_ODD@);
+V term(V a, V a_rate, [[maybe_unused]] V b, [[maybe_unused]] V b_rate) {
+  return factor(a, @P@, @P_ODD@@P_ROOT@) * factor(a_rate, @Q@, @Q_ODD@)@B_FACTORS@;
 }
 
 // Residual signature: the residual follows the term, built from @VIEW_SIGNAL@.
 hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
-  const Eigen::VectorXd& a = r.@VIEW_MEMBER@;
+  const Eigen::VectorXd &a = r.@VIEW_MEMBER@, &b = r.u;
   Eigen::VectorXd phi(a.size());
-  double previous = a.size() ? a[0] : 0.0;  // no rate before the record
+  double previous = a.size() ? a[0] : 0.0, b_previous = b.size() ? b[0] : 0.0;  // no rate before the record
   for (Eigen::Index k = 0; k < a.size(); ++k) {
-    phi[k] = term(a[k], (a[k] - previous) / r.sample_time);
-    previous = a[k];
+    phi[k] = term(a[k], (a[k] - previous) / r.sample_time, b[k], (b[k] - b_previous) / r.sample_time);
+    previous = a[k], b_previous = b[k];
   }
   return {hystbench::correlation(r.e, phi)};
 }
@@ -180,18 +197,19 @@ constexpr const char* kAdditive = R"src(
 
   template <class V>
   struct State {
-    V previous{};
+    V previous{}, b_previous{};
     V finite{};  // 0 while every output is finite
     bool started = false;  // no rate before the record
   };
 
   template <class V, class Drive>
   static V sample(const std::array<V, 1>& c, const Aux& aux, State<V>& s, V signal, [[maybe_unused]] Drive drive) {
-    const V a = @A_EXPR@;
+    const V a = @A_EXPR@, b = @B_EXPR@;
     const V rate = s.started ? (a - s.previous) / aux.ts : V{};
-    s.previous = a;
+    const V b_rate = s.started ? (b - s.b_previous) / aux.ts : V{};
+    s.previous = a, s.b_previous = b;
     s.started = true;
-    const V out = signal + c[0] * term(a, rate);
+    const V out = signal + c[0] * term(a, rate, b, b_rate);
     s.finite += out * 0.0;
     return out;
   }
@@ -228,23 +246,27 @@ constexpr const char* kForce = R"src(
   struct State {
     hystbench::BiquadState<V> resonance{};
     V x1{};      // the output one sample earlier
+    V b1{};      // b one sample earlier
     V finite{};  // 0 while every output is finite and every force was solved
+    bool started = false;  // no rate of b before the record
   };
 
   template <class V, class Drive>
-  static V sample(const std::array<V, 6>& c, const Aux& aux, State<V>& s, V w, Drive) {
+  static V sample(const std::array<V, 6>& c, const Aux& aux, State<V>& s, V w, [[maybe_unused]] Drive drive) {
     const std::array<V, 5> g = {c[0], c[1], c[2], c[3], c[4]};
     const V coefficient = c[5], one = V{} + 1.0;
+    const V b = @B_EXPR@, b_rate = s.started ? (b - s.b1) / aux.ts : V{};
+    s.b1 = b, s.started = true;
     // The output for a given input of the resonance at this sample, its state left as it is.
     const auto output = [&](V input) {
       const V gw = ((g[0] * input + g[1] * s.resonance.w1) + (g[2] * s.resonance.w2 - g[4] * s.resonance.y2)) -
                    g[3] * s.resonance.y1;
       return input - gw;
     };
-    // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts)),
+    // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts, b, b')),
     // solved by Newton's method from the previous output, every lane on its own
     // (a lane stops when it has converged, or fails when it cannot).
-    const auto residual = [&](V x) { return x - output(w + coefficient * term(x, (x - s.x1) / aux.ts)); };
+    const auto residual = [&](V x) { return x - output(w + coefficient * term(x, (x - s.x1) / aux.ts, b, b_rate)); };
     V x = s.x1;
     auto done = coefficient == V{};  // no force: nothing to solve
     auto failed = coefficient != coefficient;  // none yet
@@ -259,7 +281,7 @@ constexpr const char* kForce = R"src(
       done = done ? done : (close | broken);
     }
     failed = failed | (done == decltype(done){});  // no output consistent with its force: diverging
-    const V force = coefficient == V{} ? V{} : coefficient * term(x, (x - s.x1) / aux.ts);
+    const V force = coefficient == V{} ? V{} : coefficient * term(x, (x - s.x1) / aux.ts, b, b_rate);
     const V input = w + force;
     const V out = input - hystbench::biquad_step(g, s.resonance, input);
     s.x1 = out;
@@ -284,10 +306,10 @@ std::string param_text(const std::string& name, double lower, double upper, doub
          "\"}";
 }
 
-std::string params_text(const ProposedTerm& t) {
+std::string params_text(const WrittenTerm& t) {
   int u_power = 0, y_power = 0;
   std::string unit;
-  unit_powers(t.term, u_power, y_power, unit);
+  unit_powers(t, u_power, y_power, unit);
   const double bound = std::abs(t.coefficient) > 0.0 ? 10.0 * std::abs(t.coefficient) : 1.0;
   std::string c = param_text("c", -bound, bound, 0.0, y_power, u_power, unit, "coefficient of the proposed term");
   if (t.term.stage != TermStage::Dynamics) return c;
@@ -323,53 +345,128 @@ void check_effect_name(const std::string& name) {
 
 namespace {
 
+std::string by_hand() { return "; write its effect by hand (docs/plugins.md#adding-a-physical-effect)"; }
+
+// Two factors of two signals, each a power of the signal or of its rate.
+bool of_two_signals(const CandidateTerm& t) {
+  return t.factors.size() == 2 && t.factors[0].signal != t.factors[1].signal && !t.has_root() &&
+         t.factors[0].signal != TermSignal::Play && t.factors[1].signal != TermSignal::Play;
+}
+
+bool has_static_effects(const Model& model) {
+  return std::any_of(model.chain().begin(), model.chain().end(),
+                     [](const Model::ChainEntry& e) { return e.info->stage == EffectStage::Nonlinearity; });
+}
+
+// A product of two signals as the block of its latest signal sees them: the
+// static block its input v and the output w it hands on; a force inside the
+// dynamics its own output x and its input w. A force's factor of v is
+// written with w when the static block is the gain alone (w = gain·v, so
+// the coefficient is divided by the gain); an output effect sees only y.
+WrittenTerm written_product(WrittenTerm w, const Model& model, double gain) {
+  const CandidateTerm& t = w.term;
+  if (t.stage != TermStage::Static && t.stage != TermStage::Dynamics)
+    throw InputError("the term " + t.text() + " pairs the " + term_stage_name(t.stage) +
+                     " block's signal with a signal of an earlier block, which an effect of that block does not "
+                     "see" + by_hand());
+  const TermSignal own = t.stage == TermStage::Static ? TermSignal::StaticOutput : TermSignal::Resonance;
+  TermFactor mine = t.factors[0], other = t.factors[1];
+  if (other.signal == own) std::swap(mine, other);
+  if (other.signal == TermSignal::Drive && t.stage == TermStage::Dynamics) {
+    if (has_static_effects(model))
+      throw InputError("the term " + t.text() + " pairs the drive v with the resonance's output; a force inside "
+                       "the dynamics sees its input w, which is gain·v only when the static block is the gain "
+                       "alone, and the model " + model.text() + " has static effects" + by_hand());
+    if (!std::isfinite(gain) || gain == 0.0)
+      throw InputError("the term " + t.text() + " is written with w = gain·v, and the fitted gain is " +
+                       format_number("%g", gain) + by_hand());
+    other.signal = TermSignal::StaticOutput;
+    w.coefficient /= other.odd ? gain : std::abs(gain);
+    w.note = "Written with w for v: the static block is the gain alone, so w = gain·v\n// and c is the proposed "
+             "coefficient divided by the fitted gain (" + format_number("%.6g", gain) + ").";
+  }
+  w.term.factors = {mine, other};
+  w.a = {own, false, 0, false}, w.a_rate = {own, true, 0, false};
+  w.b = {other.signal, false, 0, false}, w.b_rate = {other.signal, true, 0, false};
+  (mine.rate ? w.a_rate : w.a) = mine;
+  (other.rate ? w.b_rate : w.b) = other;
+  return w;
+}
+
 // The forms a generated effect has: a power of one signal of the term's
-// block and of its rate; a force needs msd to extend.
-void check_form(const CandidateTerm& t, const std::string& model) {
-  if (!t.of_one_signal())
-    throw InputError("the term " + t.text() + " is not a power of one signal of the " + term_stage_name(t.stage) +
-                     " block and of its rate, the one form a generated effect has; write its effect by hand "
-                     "(docs/plugins.md#adding-a-physical-effect)");
-  if (t.stage == TermStage::Dynamics && !Model::parse(model).has("msd"))
+// block and of its rate, or a product of two signals its block sees; a
+// force needs msd to extend. Throws InputError saying why otherwise.
+WrittenTerm written_term(const ProposedTerm& p, const EffectSourceContext& context) {
+  const CandidateTerm& t = p.term;
+  const Model model = Model::parse(context.model);
+  if (t.stage == TermStage::Dynamics && !model.has("msd"))
     throw InputError("the term " + t.text() +
                      " is a force inside the dynamics, and the generated effect adds it to msd, which the model " +
-                     model + " does not have; fit a model with msd, or write the effect by hand (docs/plugins.md)");
+                     context.model + " does not have; fit a model with msd, or write the effect by hand (docs/plugins.md)");
+  WrittenTerm w{t, p.coefficient, t.own_factor(false), t.own_factor(true), {}, {}, ""};
+  if (t.of_one_signal()) return w;
+  if (!of_two_signals(t))
+    throw InputError("the term " + t.text() + " is neither a power of one signal of the " + term_stage_name(t.stage) +
+                     " block and of its rate nor a product of two signals that block sees, the forms a generated "
+                     "effect has" + by_hand());
+  return written_product(w, model, context.gain);
+}
+
+// " * factor(b, 1, true)": the factors of the second signal, none for a term of one signal.
+std::string second_factors(const WrittenTerm& w) {
+  std::string out;
+  if (w.b.power > 0) out += " * factor(b, " + std::to_string(w.b.power) + ", " + (w.b.odd ? "true" : "false") + ")";
+  if (w.b_rate.power > 0)
+    out += " * factor(b_rate, " + std::to_string(w.b_rate.power) + ", " + (w.b_rate.odd ? "true" : "false") + ")";
+  return out;
+}
+
+// How the header names the second signal.
+std::string second_signal_line(const WrittenTerm& w) {
+  if (!w.product()) return "";
+  const bool input = w.term.stage == TermStage::Dynamics;
+  return ",\n// and " + w.b.symbol() + (input ? " the dynamics' input" : " the drive") + " (the stage input; b in the code)";
 }
 
 }  // namespace
 
 std::string proposed_effect_source(const ProposedTerm& t, const EffectSourceContext& context) {
   check_effect_name(context.name);
-  check_form(t.term, context.model);
+  const WrittenTerm w = written_term(t, context);
   const bool force = t.term.stage == TermStage::Dynamics;
-  const StageForm f = stage_form(t.term);
-  const TermFactor a = t.term.own_factor(false), rate = t.term.own_factor(true);
+  const StageForm f = stage_form(w);
   std::string s = std::string(kCommon) + (force ? kForce : kAdditive);
   const std::vector<std::pair<std::string, std::string>> keys = {
-      {"@TERM@", t.term.text()},
+      {"@PROPOSED@", t.term.text()},
+      {"@TERM@", w.term.text()},
       {"@STAGE_NAME@", term_stage_name(t.term.stage)},
       {"@STAGE@", f.stage},
-      {"@SYMBOL@", a.symbol()},
+      {"@SYMBOL@", w.a.symbol()},
       {"@SIGNAL@", f.signal},
+      {"@OTHER_LINE@", second_signal_line(w)},
+      {"@NOTE@", w.note.empty() ? "" : "\n// " + w.note},
       {"@MODEL@", literal(context.model)},
       {"@DATA@", literal(context.data_name)},
       {"@SHARE@", format_number("%.3g", 100.0 * t.err)},
       {"@COEF@", format_number("%.6g", t.coefficient)},
       {"@SE@", format_number("%.2g", t.standard_error)},
-      {"@P@", std::to_string(a.power)},
-      {"@P_ODD@", a.odd ? "true" : "false"},
-      {"@P_ROOT@", a.root ? ", true" : ""},
-      {"@Q@", std::to_string(rate.power)},
-      {"@Q_ODD@", rate.odd ? "true" : "false"},
+      {"@P@", std::to_string(w.a.power)},
+      {"@P_ODD@", w.a.odd ? "true" : "false"},
+      {"@P_ROOT@", w.a.root ? ", true" : ""},
+      {"@Q@", std::to_string(w.a_rate.power)},
+      {"@Q_ODD@", w.a_rate.odd ? "true" : "false"},
+      {"@B_FACTORS@", second_factors(w)},
+      {"@B_ROLE@", w.product() ? ", the stage input" : " (unused: the term is of one signal)"},
+      {"@B_EXPR@", w.product() ? "V{} + drive" : "V{}"},
       {"@A_EXPR@", f.a_expr},
       {"@DRIVE@", f.drive},
       {"@K@", force ? "6" : "1"},
-      {"@VIEW_SIGNAL@", f.view_signal},
+      {"@VIEW_SIGNAL@", std::string(f.view_signal) + (w.product() ? ", and b from the input u, which stands for it" : "")},
       {"@VIEW_MEMBER@", f.view_member},
       {"@INCLUDES@", force ? "#include <numbers>\n\n#include \"problems/hammerstein/effects/biquad.hpp\""
                            : ""},
       {"@EXTENDS@", force ? "    i.extends = \"msd\";\n" : ""},
-      {"@PARAMS@", params_text(t)},
+      {"@PARAMS@", params_text(w)},
       {"@NAME@", context.name},
       {"@CLASS@", class_name(context.name)}};
   for (const auto& [key, value] : keys) s = replace_all(s, key, value);

@@ -15,6 +15,13 @@
 //                           extends msd (same period and zeta) and adds
 //                           c·f(x)·g(x') to its input, x its own output at
 //                           the same sample (an implicit step)
+//
+// or a product of two signals its block sees, each to the first power or
+// its rate: v and w in the static block (c·a(w)·b(v) added to w), w and x in
+// the dynamics (the force c·a(x)·b(w)). A force's factor of the drive v is
+// written with w when the static block is the gain alone (w = gain·v, c
+// divided by the gain); other products (an output effect sees only y) are
+// written by hand.
 // c = 0 leaves the signal exactly as it was (for the dynamics form: exactly
 // as msd leaves it). The bounds of c are ten times the proposed value
 // either way; its citation says it was proposed from data.
@@ -28,12 +35,12 @@ struct EffectSourceContext {
   std::string name;       // the effect's catalog name: [a-z][a-z0-9_]*
   std::string data_name;  // the measurement it was proposed from
   std::string model;      // the fitted model's effects
+  double gain = 1.0;      // its fitted gain (normalised), for a product written with w for v
 };
 
-// Throws InputError for a bad name, for a term that is not a power of one
-// signal of its block and of its rate (a play operator, a product of two
-// signals: those effects are written by hand), and for a dynamics term when
-// the model has no msd to extend.
+// Throws InputError for a bad name, for a term of neither form above (a play
+// operator, a product the block cannot see: those effects are written by
+// hand), and for a dynamics term when the model has no msd to extend.
 std::string proposed_effect_source(const ProposedTerm& term, const EffectSourceContext& context);
 
 // The CMakeLists.txt that builds it as NAME.so with find_package(hystbench).

@@ -8,6 +8,17 @@
 #include <limits>
 
 namespace hystbench {
+namespace {
+
+// An output finite but beyond 1e154 squares to inf, and inf times a held-out
+// sample's weight 0 is NaN: such a candidate has diverged, and its SSE is
+// infinite, never NaN, which an optimizer cannot rank.
+double sse_or_infinite(double sum) {
+  constexpr double kInfinite = std::numeric_limits<double>::infinity();
+  return sum < kInfinite ? sum : kInfinite;
+}
+
+}  // namespace
 
 ModelProblem::ModelProblem(const Model& model, const ModelData& data)
     : model_(model), data_(data), bounds_(model.bounds()), batched_(model.has_lanes()) {}
@@ -19,7 +30,7 @@ double ModelProblem::sse(const Eigen::Ref<const Eigen::VectorXd>& x) const {
 }
 
 double ModelProblem::sse_of(const Eigen::VectorXd& y) const {
-  return ((data_.y - y).array().square() * data_.estimation.array()).sum();
+  return sse_or_infinite(((data_.y - y).array().square() * data_.estimation.array()).sum());
 }
 
 void ModelProblem::evaluate(const Eigen::Ref<const Eigen::MatrixXd>& X,
@@ -47,7 +58,7 @@ void ModelProblem::evaluate_block(const Eigen::Ref<const Eigen::MatrixXd>& X, Ei
                         [&](Eigen::Index begin, std::span<const LaneVector> y) { sse.add(begin, y); });
   const auto sums = sse.sums();
   for (Eigen::Index l = 0; l < count; ++l)
-    f[first + l] = ok[l] ? sums[std::size_t(l)] : std::numeric_limits<double>::infinity();
+    f[first + l] = ok[l] ? sse_or_infinite(sums[std::size_t(l)]) : std::numeric_limits<double>::infinity();
 }
 
 nlohmann::json ModelProblem::describe() const {
