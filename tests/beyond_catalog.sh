@@ -13,6 +13,8 @@
 #   - a drive-dependent stiffness: propose on a fitted msd ranks |v|·x
 #     first, a product of two signals; its generated force (written with w
 #     = gain·v) takes msd's place with the same result;
+#   - quadratic damping: propose on a fitted msd ranks x'·|x'| first; its
+#     generated force takes msd's place with the same result;
 #   - a play operator beside the gain: propose on a fitted msd ranks
 #     play(v, 25 %) first, and says why it writes no effect for it.
 # benchmarks/beyond_catalog.sh runs the same at full size.
@@ -87,6 +89,13 @@ discover_with_effect cubic cubic.csv msd
 grep -qF "  1. dynamics: |v|·x  " drive.txt || fail "drive_stiffness: the first proposal is not |v|·x: $(cat drive.txt)"
 build_effect drive proposed_term
 discover_with_effect drive drive.csv msd
+# A drag that grows with the speed: a force of the resonance's rate alone.
+"$planted" quadratic_damping drag.csv 4000
+"$hystbench" fit --data drag.csv --model msd --out drag-msd >/dev/null
+"$hystbench" propose --data drag.csv --fit drag-msd/fit.json --out drag > drag.txt
+grep -qF "  1. dynamics: x'·|x'|  " drag.txt || fail "quadratic_damping: the first proposal is not x'·|x'|: $(cat drag.txt)"
+build_effect drag proposed_term
+discover_with_effect drag drag.csv msd
 # A play operator beside the gain: a term of the library that no generated
 # effect has, proposed with no effect written, and said so.
 "$planted" parallel_play play.csv 4000

@@ -6,7 +6,8 @@
 //
 // CASE: rate_gain (a gain that grows with the drive rate), cubic_stiffness
 // (a hardening spring inside the dynamics), parallel_play (a play operator beside
-// the gain) or drive_stiffness (a spring that stiffens with the drive).
+// the gain), drive_stiffness (a spring that stiffens with the drive) or
+// quadratic_damping (a drag that grows with the speed).
 // OUT.truth.json beside it holds the planted system and the noise sd, as
 // `hystbench simulate` writes one.
 #include <fstream>
@@ -27,6 +28,8 @@ bool planted_case(const std::string& name, hystbench::planted::System& s) {
     s.play_gain = 0.2;
   else if (name == "drive_stiffness")
     s.drive_stiffness = 0.03;
+  else if (name == "quadratic_damping")
+    s.quadratic_damping = 1e-6;
   else
     return false;
   return true;
@@ -36,13 +39,14 @@ bool planted_case(const std::string& name, hystbench::planted::System& s) {
 
 int main(int argc, char** argv) {
   if (argc < 3 || argc > 4) {
-    std::cerr << "usage: hystbench_planted_data rate_gain|cubic_stiffness|parallel_play|drive_stiffness OUT.csv [SAMPLES]\n";
+    std::cerr << "usage: hystbench_planted_data rate_gain|cubic_stiffness|parallel_play|drive_stiffness|"
+                 "quadratic_damping OUT.csv [SAMPLES]\n";
     return 2;
   }
   hystbench::planted::System s;
   if (!planted_case(argv[1], s)) {
     std::cerr << "hystbench_planted_data: unknown case '" << argv[1]
-              << "'; known: rate_gain, cubic_stiffness, parallel_play, drive_stiffness\n";
+              << "'; known: rate_gain, cubic_stiffness, parallel_play, drive_stiffness, quadratic_damping\n";
     return 2;
   }
   const long n = argc == 4 ? std::stol(argv[3]) : 6000;
@@ -58,7 +62,8 @@ int main(int argc, char** argv) {
                                 {"system",
                                  {{"gain", s.gain}, {"rate_gain", s.rate_gain}, {"period", s.period},
                                   {"zeta", s.zeta}, {"cubic", s.cubic}, {"play_gain", s.play_gain},
-                                  {"play_radius", s.play_radius}, {"drive_stiffness", s.drive_stiffness}}},
+                                  {"play_radius", s.play_radius}, {"drive_stiffness", s.drive_stiffness},
+                                  {"quadratic_damping", s.quadratic_damping}}},
                                 {"noise", {{"sd", s.noise}}}};
   const std::string stem = out.size() > 4 && out.substr(out.size() - 4) == ".csv" ? out.substr(0, out.size() - 4) : out;
   std::ofstream(stem + ".truth.json") << truth.dump(2) << "\n";

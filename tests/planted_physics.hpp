@@ -6,7 +6,8 @@
 //                   + play_gain·P(u)                       and a play operator beside the gain: P of
 //                                                          radius play_radius·max|u|, from 0
 //   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³           a stiffness that grows with amplitude,
-//                   + drive_stiffness·|w|·x = w            and one that grows with the drive
+//                   + drive_stiffness·|w|·x                and one that grows with the drive,
+//                   + quadratic_damping·x'·|x'| = w        a drag that grows with the speed
 //   output        y = x + root_gain·sign(x)·√|x| + noise  a sensor law steeper than linear near 0
 //
 // ω = 2π/period. The ODE is integrated by RK4 with 20 sub-steps per sample,
@@ -32,6 +33,7 @@ struct System {
   double play_gain = 0.0;
   double play_radius = 0.25;      // share of max |u|
   double drive_stiffness = 0.0;   // per unit of |w|
+  double quadratic_damping = 0.0; // s² per unit of x (x' in units of y per s)
   double root_gain = 0.0;  // units of y^(1/2)
   double noise = 0.01;     // sd, units of y
 };
@@ -78,7 +80,9 @@ inline Measurement simulate(const System& s, const Eigen::VectorXd& u, double ts
   }
   const double omega = 2.0 * M_PI / s.period;
   const auto accel = [&](double x, double v, double drive) {
-    return omega * omega * (drive - x - s.cubic * x * x * x - s.drive_stiffness * std::abs(drive) * x) -
+    return omega * omega *
+               (drive - x - s.cubic * x * x * x - s.drive_stiffness * std::abs(drive) * x -
+                s.quadratic_damping * v * std::abs(v)) -
            2.0 * s.zeta * omega * v;
   };
   constexpr int kSub = 20;

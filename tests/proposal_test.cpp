@@ -301,6 +301,15 @@ TEST(Proposal, PlantedDriveDependentStiffnessIsProposedAsAProductAcrossTheChain)
   }
 }
 
+TEST(Proposal, PlantedQuadraticDampingIsProposedAsADragInsideTheDynamics) {
+  planted::System s;
+  s.quadratic_damping = 1e-6;
+  const Proposal p = expect_first_proposal(s, "x'·|x'|", TermStage::Dynamics);
+  if (!p.terms.empty()) {
+    EXPECT_LT(p.terms[0].coefficient, 0.0);  // against the motion: it takes energy out
+  }
+}
+
 TEST(Proposal, PlantedSquareRootSensorLawIsProposedAtTheOutput) {
   planted::System s;
   s.root_gain = 0.1;
