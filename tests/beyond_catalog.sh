@@ -16,7 +16,9 @@
 #   - quadratic damping: propose on a fitted msd ranks x'·|x'| first; its
 #     generated force takes msd's place with the same result;
 #   - a play operator beside the gain: propose on a fitted msd ranks
-#     play(v, 25 %) first, and says why it writes no effect for it.
+#     play(v, 25 %) first, and says why it writes no effect for it;
+#   - a gain that drifts with time: propose says that no term of its
+#     library expresses what is missing.
 # benchmarks/beyond_catalog.sh runs the same at full size.
 set -euo pipefail
 build_dir=$1
@@ -100,4 +102,12 @@ grep -q "^no effect written: the term .* write its effect by hand" play.txt ||
   fail "parallel_play: propose does not say why no effect was written: $(cat play.txt)"
 grep -q "No effect was written" play/proposals.md || fail "parallel_play: proposals.md does not say no effect was written"
 [[ ! -e play/effect ]] || fail "parallel_play: an effect folder was written for a term without a generated form"
+# A gain that drifts with time: no term of the library expresses it, and
+# propose says so.
+"$planted" gain_drift drift.csv 4000
+"$hystbench" fit --data drift.csv --model msd --out drift-msd >/dev/null
+"$hystbench" propose --data drift.csv --fit drift-msd/fit.json --out drift > drift.txt
+grep -q "^The library cannot express what is missing" drift.txt ||
+  fail "gain_drift: propose does not say the library falls short: $(cat drift.txt)"
+grep -q "Beyond the library" drift/proposals.md || fail "gain_drift: proposals.md does not say the library falls short"
 echo "beyond_catalog: every planted case found and proposed; the generated effects fitted"

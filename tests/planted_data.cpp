@@ -7,7 +7,8 @@
 // CASE: rate_gain (a gain that grows with the drive rate), cubic_stiffness
 // (a hardening spring inside the dynamics), parallel_play (a play operator beside
 // the gain), drive_stiffness (a spring that stiffens with the drive) or
-// quadratic_damping (a drag that grows with the speed).
+// quadratic_damping (a drag that grows with the speed) or gain_drift (a gain
+// that drifts with time, which no term of the library expresses).
 // OUT.truth.json beside it holds the planted system and the noise sd, as
 // `hystbench simulate` writes one.
 #include <fstream>
@@ -30,6 +31,8 @@ bool planted_case(const std::string& name, hystbench::planted::System& s) {
     s.drive_stiffness = 0.03;
   else if (name == "quadratic_damping")
     s.quadratic_damping = 1e-6;
+  else if (name == "gain_drift")
+    s.gain_drift = 0.05;
   else
     return false;
   return true;
@@ -40,13 +43,14 @@ bool planted_case(const std::string& name, hystbench::planted::System& s) {
 int main(int argc, char** argv) {
   if (argc < 3 || argc > 4) {
     std::cerr << "usage: hystbench_planted_data rate_gain|cubic_stiffness|parallel_play|drive_stiffness|"
-                 "quadratic_damping OUT.csv [SAMPLES]\n";
+                 "quadratic_damping|gain_drift OUT.csv [SAMPLES]\n";
     return 2;
   }
   hystbench::planted::System s;
   if (!planted_case(argv[1], s)) {
     std::cerr << "hystbench_planted_data: unknown case '" << argv[1]
-              << "'; known: rate_gain, cubic_stiffness, parallel_play, drive_stiffness, quadratic_damping\n";
+              << "'; known: rate_gain, cubic_stiffness, parallel_play, drive_stiffness, quadratic_damping, "
+                 "gain_drift\n";
     return 2;
   }
   const long n = argc == 4 ? std::stol(argv[3]) : 6000;
@@ -60,7 +64,7 @@ int main(int argc, char** argv) {
   hystbench::write_measurement(out, m, {"planted case " + std::string(argv[1]) + " (tests/planted_physics.hpp)"});
   const nlohmann::json truth = {{"planted", argv[1]},
                                 {"system",
-                                 {{"gain", s.gain}, {"rate_gain", s.rate_gain}, {"period", s.period},
+                                 {{"gain", s.gain}, {"rate_gain", s.rate_gain}, {"gain_drift", s.gain_drift}, {"period", s.period},
                                   {"zeta", s.zeta}, {"cubic", s.cubic}, {"play_gain", s.play_gain},
                                   {"play_radius", s.play_radius}, {"drive_stiffness", s.drive_stiffness},
                                   {"quadratic_damping", s.quadratic_damping}}},

@@ -3,6 +3,7 @@
 // for the purpose (no catalog effect is used):
 //
 //   static part   w = gain·u·(1 + rate_gain·|u'|)          a gain that grows with the drive rate
+//                       ·(1 + gain_drift·t)                and one that drifts with time (heating)
 //                   + play_gain·P(u)                       and a play operator beside the gain: P of
 //                                                          radius play_radius·max|u|, from 0
 //   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³           a stiffness that grows with amplitude,
@@ -27,6 +28,7 @@ namespace hystbench::planted {
 struct System {
   double gain = 1.0;
   double rate_gain = 0.0;  // s (per unit of |u'|, u' in units of u per s)
+  double gain_drift = 0.0; // per s
   double period = 0.02;    // s
   double zeta = 0.15;
   double cubic = 0.0;      // per unit of x²
@@ -68,7 +70,7 @@ inline Measurement simulate(const System& s, const Eigen::VectorXd& u, double ts
   for (Eigen::Index k = 0; k < n; ++k) {
     const double rate = (u[k] - previous) / ts;
     previous = u[k];
-    w[k] = s.gain * u[k] * (1.0 + s.rate_gain * std::abs(rate));
+    w[k] = s.gain * u[k] * (1.0 + s.rate_gain * std::abs(rate)) * (1.0 + s.gain_drift * double(k) * ts);
   }
   if (s.play_gain != 0.0) {
     const double r = s.play_radius * u.cwiseAbs().maxCoeff();

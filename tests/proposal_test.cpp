@@ -272,6 +272,8 @@ Proposal expect_first_proposal(const planted::System& s, const std::string& text
   }
   EXPECT_EQ(p.terms[0].term.text(), text);
   EXPECT_EQ(p.terms[0].term.stage, stage);
+  EXPECT_FALSE(p.falls_short) << beyond_library(p);
+  EXPECT_NEAR(p.noise_sd, s.noise, 0.3 * s.noise);
   return p;
 }
 
@@ -317,6 +319,23 @@ TEST(Proposal, PlantedSquareRootSensorLawIsProposedAtTheOutput) {
   if (!p.terms.empty()) {
     EXPECT_GT(p.terms[0].coefficient, 0.0);
   }
+}
+
+// A gain that drifts with time (30 % over the record): no term of the
+// library is a function of time, and propose says so instead of passing a
+// partial term off as the answer.
+TEST(Proposal, PlantedGainDriftIsSaidToBeBeyondTheLibrary) {
+  planted::System s;
+  s.gain_drift = 0.05;
+  const PlantedFit f = fit_planted(s, "msd");
+  const Proposal p = propose_terms(f.model, f.x, f.data);
+  EXPECT_TRUE(p.falls_short);
+  EXPECT_GT(p.rmse_heldout_after, kLibraryShort * p.noise_sd);
+  EXPECT_NEAR(p.noise_sd, s.noise, 0.3 * s.noise);
+  const std::string why = beyond_library(p);
+  EXPECT_NE(why.find("The library cannot express what is missing"), std::string::npos) << why;
+  EXPECT_NE(why.find("a law that changes with time"), std::string::npos) << why;
+  EXPECT_NE(p.to_json()["beyond_library"].get<std::string>(), "");
 }
 
 TEST(Proposal, NothingIsProposedWhenTheModelIsRight) {

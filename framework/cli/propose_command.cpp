@@ -107,6 +107,7 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   write_file_atomic(dir / "proposals.json", out.dump(2) + "\n");
   write_file_atomic(dir / "proposals.md", proposal_markdown(p, source.file_name(), source.y_unit, effect));
   print_proposal(p, source.y_unit);
+  if (p.falls_short) std::cout << beyond_library(p) << "\n";
   if (!effect.not_written.empty()) std::cout << "no effect written: " << effect.not_written << "\n";
   std::cout << "wrote " << (dir / "proposals.md").string() << " and proposals.json"
             << (effect.name.empty() ? "" : ", and effect/" + effect.name + ".cpp (fit it as --model " + effect.model + ")")

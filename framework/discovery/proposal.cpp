@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
+#include "framework/discovery/noise_floor.hpp"
 #include "framework/io/json_number.hpp"
 
 namespace hystbench {
@@ -152,6 +154,9 @@ void residual_errors(const Columns& c, const ForwardRegression& r, const ModelDa
   p.rmse_estimation_after = rms(rows_where(after, data.estimation)) * sy;
   p.rmse_heldout = rms(held_e) * sy;
   p.rmse_heldout_after = rms(rows_where(after, held)) * sy;
+  p.noise_sd = estimate_noise_floor(data.u, data.y, data.segment).sigma * sy;
+  const double left = p.n_heldout ? p.rmse_heldout_after : p.rmse_estimation_after;
+  p.falls_short = std::isfinite(p.noise_sd) && p.noise_sd > 0.0 && left > kLibraryShort * p.noise_sd;
 }
 
 }  // namespace
@@ -182,6 +187,24 @@ Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const Model
   }
   residual_errors(c, r, data, p);
   return p;
+}
+
+std::string beyond_library(const Proposal& p) {
+  if (!p.falls_short) return "";
+  const bool held = p.n_heldout > 0;
+  const double before = held ? p.rmse_heldout : p.rmse_estimation, after = held ? p.rmse_heldout_after : p.rmse_estimation_after;
+  const double excess = before * before - p.noise_sd * p.noise_sd;
+  const double removed = excess > 0.0 ? (before * before - after * after) / excess : 0.0;
+  return std::string("The library cannot express what is missing: with ") +
+         (p.terms.empty() ? "no term" : "the terms above") + " the residual " + (held ? "on the held-out samples " : "") +
+         "is still " + format_number("%.3g", after / p.noise_sd) + " times the noise floor (" +
+         format_number("%.4g", after) + " against σ = " + format_number("%.4g", p.noise_sd) + "), " +
+         format_number("%.0f", 100.0 * std::clamp(removed, 0.0, 1.0)) +
+         " % of the error above the noise explained. Its terms are powers, play operators, square roots and "
+         "products of the chain's signals at one sample; a law that changes with time (a drifting gain, "
+         "heating), a state the chain does not have (a second loop, a thermal or charge state) or a jump (dry "
+         "friction) is none of those. Write that effect by hand (docs/plugins.md#adding-a-physical-effect), "
+         "guided by where the error concentrates (hystbench compare).";
 }
 
 nlohmann::json to_json(const std::vector<StageLead>& leads) {
@@ -237,6 +260,9 @@ nlohmann::json Proposal::to_json() const {
           {"options", options.to_json()},
           {"terms", terms_json},
           {"first_refused", refused_json},
+          {"noise_sd", number_or_null(noise_sd)},
+          {"library_falls_short", falls_short},
+          {"beyond_library", falls_short ? nlohmann::json(beyond_library(*this)) : nlohmann::json(nullptr)},
           {"units", "coefficients in normalised units (u and y divided by the fit's scales, rates per second)"},
           {"residual",
            {{"estimation", {{"samples", n_estimation}, {"rmse_before", rmse_estimation}, {"rmse_after", rmse_estimation_after}}},

@@ -86,9 +86,23 @@ struct Proposal {
   double rmse_estimation = 0.0, rmse_estimation_after = 0.0;
   double rmse_heldout = 0.0, rmse_heldout_after = 0.0;
   long n_estimation = 0, n_heldout = 0;
+  // The record's noise floor (units of y, noise_floor.hpp; NaN when it
+  // cannot be estimated) and whether the library falls short: after the
+  // chosen terms the residual (held out when samples are held out) is still
+  // above kLibraryShort times it, so what is missing is no term of the
+  // library, and beyond_library() says so.
+  double noise_sd = 0.0;
+  bool falls_short = false;
 
   nlohmann::json to_json() const;
 };
+
+// A residual above this many noise sd after the chosen terms is one the
+// library does not explain (the planted forms it expresses end at 1.0-1.1).
+constexpr double kLibraryShort = 1.2;
+
+// When the library falls short, why, in plain words with the numbers ("" otherwise).
+std::string beyond_library(const Proposal& p);
 
 // Throws InputError when the fitted model does not simulate on `data`.
 Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const ModelData& data,

@@ -72,6 +72,7 @@ std::string proposal_markdown(const Proposal& p, const std::string& data_name, c
   else
     out += terms_table(p, unit) + "\n";
   out += refused_text(p);
+  if (p.falls_short) out += "\n**Beyond the library.** " + beyond_library(p) + "\n";
   out += "\nCoefficients are in normalised units (u and y divided by the fit's scales, rates per second). "
          "A runner-up close to its term's share means the data hardly tell the two apart.\n";
   return out + next_steps(effect);
