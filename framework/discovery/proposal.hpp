@@ -98,7 +98,8 @@ struct Proposal {
 };
 
 // A residual above this many noise sd after the chosen terms is one the
-// library does not explain (the planted forms it expresses end at 1.0-1.1).
+// library does not explain (the planted forms it expresses end at 1.06 to
+// 1.16, tests/proposal_test.cpp).
 constexpr double kLibraryShort = 1.2;
 
 // When the library falls short, why, in plain words with the numbers ("" otherwise).
