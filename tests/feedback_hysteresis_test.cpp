@@ -188,6 +188,23 @@ TEST(FeedbackHysteresis, InvalidOrDivergingParametersFail) {
   }
 }
 
+// A fixed sub-step count raises a stiff oscillator to at most ten times
+// itself: at 5, an oscillator needing 26 sub-steps runs and one needing 68 is
+// refused; by default (no fixed count) both run.
+TEST(FeedbackHysteresis, AFixedCountRaisesAStiffOscillatorOnlyTenfold) {
+  const double ts = 1e-3;
+  const ModelData d = data_for(multisine(500, ts, 3.0), ts);
+  Model fixed = model();
+  fixed.set_substeps(5);
+  const Model by_default = model();
+  Eigen::VectorXd y;
+  const Eigen::VectorXd stiff26 = params(3000.0, 0.1, 0.5, 0.1, 0.1), stiff68 = params(8000.0, 0.1, 0.5, 0.1, 0.1);
+  EXPECT_TRUE(fixed.simulate(stiff26, d, y));
+  EXPECT_FALSE(fixed.simulate(stiff68, d, y));
+  EXPECT_TRUE(by_default.simulate(stiff26, d, y));
+  EXPECT_TRUE(by_default.simulate(stiff68, d, y));
+}
+
 TEST(FeedbackHysteresis, SplineReproducesACubicPolynomial) {
   auto cubic = [](double k) { return 1.0 + 2.0 * k - 0.5 * k * k + 0.03 * k * k * k; };
   for (const Eigen::Index n : {4, 5, 6, 50}) {

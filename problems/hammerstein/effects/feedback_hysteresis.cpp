@@ -23,7 +23,8 @@
 //
 // Integration: classical RK4 with `substeps` steps per sample (by default as
 // many as keep the fastest linear mode within kStepAngle per step, at most
-// 20; always raised when the oscillator is too stiff for the step), the
+// 20; raised when the oscillator is too stiff for the step, up to 2000, or
+// up to ten times a fixed count, beyond which the parameters fail), the
 // input reconstructed between samples by the model's input hold
 // (input_hold.hpp): by default a not-a-knot cubic spline through the record,
 // the most accurate offline; linear or zero-order hold in a stream, where
@@ -58,6 +59,13 @@ namespace {
 constexpr double kStepAngle = 0.1;
 constexpr int kDefaultSubsteps = 20;
 constexpr int kMaxSubsteps = 2000;
+// A fixed count (--substeps, or the coarse problem a global search runs on)
+// is a request for speed: a stiff oscillator is raised to at most
+// kFixedRaise times it and refused beyond. A global search's population
+// strays into oscillators far stiffer than the record resolves, and raising
+// them towards kMaxSubsteps made one Silverbox restart eight times slower
+// than its siblings (docs/discovery.md, "Measured benchmarks").
+constexpr int kFixedRaise = 10;
 // A state beyond this (normalised units: the measured output has RMS 1) has
 // diverged.
 constexpr double kDivergence = 1e6;
@@ -193,7 +201,8 @@ class FeedbackHysteresis : public Effect {
         ws * std::sqrt(1.0 + std::max(a, 0.0)) * (zeta + std::sqrt(zeta * zeta + 1.0));
     int sub = substeps > 0 ? substeps : std::clamp(int(std::ceil(stiff / kStepAngle)), 1, kDefaultSubsteps);
     if (stiff > double(sub)) {
-      if (!(stiff <= double(kMaxSubsteps))) return EffectSetup::Invalid;
+      const int most = substeps > 0 ? std::min(kMaxSubsteps, kFixedRaise * substeps) : kMaxSubsteps;
+      if (!(stiff <= double(most))) return EffectSetup::Invalid;
       sub = static_cast<int>(std::ceil(stiff));
     }
     c = {{ws * ws, 2.0 * zeta * ws, a, bg, bd}, sub, 1.0 / sub, a != 0.0};
