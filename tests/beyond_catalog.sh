@@ -17,8 +17,9 @@
 #     generated force takes msd's place with the same result;
 #   - a play operator beside the gain: propose on a fitted msd ranks
 #     play(v, 25 %) first, and says why it writes no effect for it;
-#   - a gain that drifts with time: propose says that no term of its
-#     library expresses what is missing.
+#   - a gain that drifts with time, dry (Coulomb) friction and a play
+#     operator whose width grows with the drive rate: propose says that no
+#     term of its library expresses what is missing, and why.
 # benchmarks/beyond_catalog.sh runs the same at full size.
 set -euo pipefail
 build_dir=$1
@@ -102,12 +103,18 @@ grep -q "^no effect written: the term .* write its effect by hand" play.txt ||
   fail "parallel_play: propose does not say why no effect was written: $(cat play.txt)"
 grep -q "No effect was written" play/proposals.md || fail "parallel_play: proposals.md does not say no effect was written"
 [[ ! -e play/effect ]] || fail "parallel_play: an effect folder was written for a term without a generated form"
-# A gain that drifts with time: no term of the library expresses it, and
-# propose says so.
-"$planted" gain_drift drift.csv 4000
-"$hystbench" fit --data drift.csv --model msd --out drift-msd >/dev/null
-"$hystbench" propose --data drift.csv --fit drift-msd/fit.json --out drift > drift.txt
-grep -q "^The library cannot express what is missing" drift.txt ||
-  fail "gain_drift: propose does not say the library falls short: $(cat drift.txt)"
-grep -q "Beyond the library" drift/proposals.md || fail "gain_drift: proposals.md does not say the library falls short"
+# Physics no term of the library expresses ($1, in file $2): propose on a
+# fitted msd says so, with the reason $3 among its words.
+beyond_case() {
+  "$planted" "$1" "$2.csv" 4000
+  "$hystbench" fit --data "$2.csv" --model msd --out "$2-msd" >/dev/null
+  "$hystbench" propose --data "$2.csv" --fit "$2-msd/fit.json" --out "$2" > "$2.txt"
+  grep -q "^The library cannot express what is missing" "$2.txt" ||
+    fail "$1: propose does not say the library falls short: $(cat "$2.txt")"
+  grep -qF "$3" "$2.txt" || fail "$1: propose does not say '$3': $(cat "$2.txt")"
+  grep -q "Beyond the library" "$2/proposals.md" || fail "$1: proposals.md does not say the library falls short"
+}
+beyond_case gain_drift drift "a law that changes with time"
+beyond_case coulomb_friction friction "a friction force that jumps with the direction of motion"
+beyond_case rate_dependent_play rate-play "a loop whose width changes with the drive's rate"
 echo "beyond_catalog: every planted case found and proposed; the generated effects fitted"

@@ -5,10 +5,14 @@
 //   static part   w = gain·u·(1 + rate_gain·|u'|)          a gain that grows with the drive rate
 //                       ·(1 + gain_drift·t)                and one that drifts with time (heating)
 //                   + play_gain·P(u)                       and a play operator beside the gain: P of
-//                                                          radius play_radius·max|u|, from 0
+//                                                          radius play_radius·max|u|, from 0, widened
+//                                                          by (1 + play_width_rate·|u'|): a loop that
+//                                                          grows with the drive rate
 //   dynamics      x''/ω² + 2ζx'/ω + x + cubic·x³           a stiffness that grows with amplitude,
 //                   + drive_stiffness·|w|·x                and one that grows with the drive,
-//                   + quadratic_damping·x'·|x'| = w        a drag that grows with the speed
+//                   + quadratic_damping·x'·|x'|            a drag that grows with the speed
+//                   + coulomb·tanh(x'/kStick) = w          and dry (Coulomb) friction, its jump at
+//                                                          x' = 0 smoothed over kStick for the RK4
 //   output        y = x + root_gain·sign(x)·√|x| + noise  a sensor law steeper than linear near 0
 //
 // ω = 2π/period. The ODE is integrated by RK4 with 20 sub-steps per sample,
@@ -34,8 +38,10 @@ struct System {
   double cubic = 0.0;      // per unit of x²
   double play_gain = 0.0;
   double play_radius = 0.25;      // share of max |u|
+  double play_width_rate = 0.0;   // s (the radius grows by this per unit of |u'|)
   double drive_stiffness = 0.0;   // per unit of |w|
   double quadratic_damping = 0.0; // s² per unit of x (x' in units of y per s)
+  double coulomb = 0.0;           // dry friction force, units of y (as a static displacement)
   double root_gain = 0.0;  // units of y^(1/2)
   double noise = 0.01;     // sd, units of y
 };
@@ -73,18 +79,23 @@ inline Measurement simulate(const System& s, const Eigen::VectorXd& u, double ts
     w[k] = s.gain * u[k] * (1.0 + s.rate_gain * std::abs(rate)) * (1.0 + s.gain_drift * double(k) * ts);
   }
   if (s.play_gain != 0.0) {
-    const double r = s.play_radius * u.cwiseAbs().maxCoeff();
+    const double r0 = s.play_radius * u.cwiseAbs().maxCoeff();
     double p = 0.0;
     for (Eigen::Index k = 0; k < n; ++k) {
+      const double rate = k > 0 ? (u[k] - u[k - 1]) / ts : 0.0;
+      const double r = r0 * (1.0 + s.play_width_rate * std::abs(rate));
       p = std::min(u[k] + r, std::max(u[k] - r, p));
       w[k] += s.play_gain * p;
     }
   }
   const double omega = 2.0 * M_PI / s.period;
+  // The speed over which the friction force turns: small beside the record's
+  // speeds (x' of order 100 per s), wide enough for 20 RK4 sub-steps a sample.
+  constexpr double kStick = 0.5;
   const auto accel = [&](double x, double v, double drive) {
     return omega * omega *
                (drive - x - s.cubic * x * x * x - s.drive_stiffness * std::abs(drive) * x -
-                s.quadratic_damping * v * std::abs(v)) -
+                s.quadratic_damping * v * std::abs(v) - s.coulomb * std::tanh(v / kStick)) -
            2.0 * s.zeta * omega * v;
   };
   constexpr int kSub = 20;

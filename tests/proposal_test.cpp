@@ -79,6 +79,30 @@ TEST(ForwardRegression, HeldOutRowsRefuseAColumnThatOnlyFitsTheEstimationNoise) 
   EXPECT_EQ(r.refused.column, 1);
 }
 
+// Column 1 explains more of the fit rows than column 0 but holds only
+// there: ranked by held-out gain, column 0 comes first and column 1 is then
+// refused. A fixed column checks that the check rows lose their part along
+// it as the fit rows do.
+TEST(ForwardRegression, HeldOutRowsRankAColumnThatHoldsOnThemAboveOneThatOnlyFitsTheEstimationRows) {
+  const Eigen::MatrixXd P = random_columns(800, 4, 6);
+  const Eigen::MatrixXd fixed = P.col(3);
+  Eigen::VectorXd e = 3.0 * P.col(3) + 0.5 * P.col(0) + 0.01 * P.col(2);
+  e.head(400) += 0.8 * P.col(1).head(400);
+  const RegressionRows fit{P.topRows(400), e.head(400), fixed.topRows(400)},
+      check{P.bottomRows(400), e.tail(400), fixed.bottomRows(400)};
+  const ForwardRegression by_err = forward_regression(fit);
+  ASSERT_FALSE(by_err.steps.empty());
+  EXPECT_EQ(by_err.steps[0].column, 1);  // the larger share of the fit rows
+  const ForwardRegression r = forward_regression(fit, {}, &check);
+  ASSERT_EQ(r.steps.size(), 1u);
+  EXPECT_EQ(r.steps[0].column, 0);
+  EXPECT_EQ(r.steps[0].runner_up, 1);
+  EXPECT_LT(r.steps[0].check_rms, 0.5 * r.check_rms);
+  EXPECT_EQ(r.refused_by, "heldout");
+  EXPECT_EQ(r.refused.column, 1);
+  EXPECT_NEAR(r.fixed_coefficients[0], 3.0, 0.1);
+}
+
 // The library's term of that text; a failure (and a stand-in term) when there is none.
 CandidateTerm library_term(const std::vector<CandidateTerm>& library, const std::string& text) {
   const auto t = std::find_if(library.begin(), library.end(), [&](const CandidateTerm& c) { return c.text() == text; });
@@ -321,21 +345,45 @@ TEST(Proposal, PlantedSquareRootSensorLawIsProposedAtTheOutput) {
   }
 }
 
-// A gain that drifts with time (30 % over the record): no term of the
-// library is a function of time, and propose says so instead of passing a
-// partial term off as the answer.
-TEST(Proposal, PlantedGainDriftIsSaidToBeBeyondTheLibrary) {
-  planted::System s;
-  s.gain_drift = 0.05;
+// propose_terms on msd fitted to `s`: the library falls short, and says so
+// with `why` among its reasons, instead of passing a partial term off as
+// the answer.
+void expect_beyond_library(const planted::System& s, const std::string& why) {
   const PlantedFit f = fit_planted(s, "msd");
   const Proposal p = propose_terms(f.model, f.x, f.data);
   EXPECT_TRUE(p.falls_short);
   EXPECT_GT(p.rmse_heldout_after, kLibraryShort * p.noise_sd);
   EXPECT_NEAR(p.noise_sd, s.noise, 0.3 * s.noise);
-  const std::string why = beyond_library(p);
-  EXPECT_NE(why.find("The library cannot express what is missing"), std::string::npos) << why;
-  EXPECT_NE(why.find("a law that changes with time"), std::string::npos) << why;
-  EXPECT_NE(p.to_json()["beyond_library"].get<std::string>(), "");
+  const std::string text = beyond_library(p);
+  EXPECT_NE(text.find("The library cannot express what is missing"), std::string::npos) << text;
+  EXPECT_NE(text.find(why), std::string::npos) << text;
+  EXPECT_EQ(p.to_json()["beyond_library"].get<std::string>(), text);
+}
+
+// A gain that drifts with time (30 % over the record): no term of the
+// library is a function of time.
+TEST(Proposal, PlantedGainDriftIsSaidToBeBeyondTheLibrary) {
+  planted::System s;
+  s.gain_drift = 0.05;
+  expect_beyond_library(s, "a law that changes with time");
+}
+
+// Dry friction, a force that jumps with the direction of motion: the odd
+// powers of the speed the library offers are zero at rest.
+TEST(Proposal, PlantedCoulombFrictionIsSaidToBeBeyondTheLibrary) {
+  planted::System s;
+  s.coulomb = 0.05;
+  expect_beyond_library(s, "a friction force that jumps with the direction of motion");
+}
+
+// A play operator whose width grows with the drive rate: the library's play
+// operators have fixed radii.
+TEST(Proposal, PlantedRateDependentPlayIsSaidToBeBeyondTheLibrary) {
+  planted::System s;
+  s.play_gain = 0.2;
+  s.play_radius = 0.1;
+  s.play_width_rate = 0.01;
+  expect_beyond_library(s, "a loop whose width changes with the drive's rate");
 }
 
 TEST(Proposal, NothingIsProposedWhenTheModelIsRight) {

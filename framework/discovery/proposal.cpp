@@ -189,6 +189,34 @@ Proposal propose_terms(const Model& model, const Eigen::VectorXd& x, const Model
   return p;
 }
 
+namespace {
+
+// What the chosen terms suggest the library lacks, in their own words: a
+// play operator chosen but not enough says the loop's width is not one of
+// the library's radii; a force of the speed alone (x′·|x′|, x′³) chosen but
+// not enough says it may jump where the speed changes sign.
+std::string library_hint(const Proposal& p) {
+  bool play = false, speed_force = false;
+  for (const ProposedTerm& t : p.terms) {
+    const auto& f = t.term.factors;
+    play = play || std::any_of(f.begin(), f.end(), [](const TermFactor& a) { return a.signal == TermSignal::Play; });
+    speed_force = speed_force || (t.term.stage == TermStage::Dynamics && !f.empty() &&
+                                  std::all_of(f.begin(), f.end(), [](const TermFactor& a) {
+                                    return a.signal == TermSignal::Resonance && a.rate && a.odd;
+                                  }));
+  }
+  std::string out;
+  if (play)
+    out += " Play operators were chosen, but the library's have three fixed radii (10, 25 and 50 % of max |v|): a "
+           "loop whose width changes with the drive's rate or amplitude is none of them.";
+  if (speed_force)
+    out += " Odd powers of the speed x′ were chosen, but each is zero at rest: a friction force that jumps with the "
+           "direction of motion (dry, Coulomb) is none of them.";
+  return out;
+}
+
+}  // namespace
+
 std::string beyond_library(const Proposal& p) {
   if (!p.falls_short) return "";
   const bool held = p.n_heldout > 0;
@@ -203,8 +231,9 @@ std::string beyond_library(const Proposal& p) {
          " % of the error above the noise explained. Its terms are powers, play operators, square roots and "
          "products of the chain's signals at one sample; a law that changes with time (a drifting gain, "
          "heating), a state the chain does not have (a second loop, a thermal or charge state) or a jump (dry "
-         "friction) is none of those. Write that effect by hand (docs/plugins.md#adding-a-physical-effect), "
-         "guided by where the error concentrates (hystbench compare).";
+         "friction) is none of those." + library_hint(p) +
+         " Write that effect by hand (docs/plugins.md#adding-a-physical-effect), guided by where the error "
+         "concentrates (hystbench compare).";
 }
 
 nlohmann::json to_json(const std::vector<StageLead>& leads) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace hystbench {
 namespace {
@@ -14,9 +15,25 @@ constexpr double kCollinear = 1e-10;
 constexpr double kNothingLeft = 1e-12;
 // ERRs this close (relative) are a tie.
 constexpr double kTie = 1e-9;
+// Check residuals this close (relative) are a tie. Looser: a residual left
+// by a good column is small, so the rounding of two columns that are the
+// same term through two paths (finite differences of a 1e−6 probe, in
+// propose) shows in it far more than in their ERRs.
+constexpr double kCheckTie = 1e-6;
 
 struct Scores {
   ForwardStep best, second;
+};
+
+// The check rows of the columns as they are orthogonalised on the fit rows
+// (every operation on a column of Q applied to its check rows), and of the
+// residual the columns taken leave there: the check residual with one more
+// column j is left − g_j·Q_j, g_j its coefficient on the fit rows, with no
+// refit per candidate.
+struct CheckColumns {
+  Eigen::MatrixXd Q;
+  Eigen::VectorXd left;
+  Eigen::MatrixXd fixed;
 };
 
 // ERR of column j of Q against the target left (sum of squares ee); 0 for
@@ -47,6 +64,40 @@ Scores score(const Eigen::MatrixXd& Q, const Eigen::VectorXd& own_norm2, const s
     }
   }
   return s;
+}
+
+double bic_change(double err, double explained, double n) {
+  const double tiny = std::numeric_limits<double>::min();
+  const double left = std::max(1.0 - explained, tiny);
+  return n * std::log(std::max(1.0 - err / left, tiny)) + std::log(n);
+}
+
+// Among the columns whose ERR passes the BIC rule, the best and second-best
+// by the check residual they leave (check_rms), so that a column which
+// explains the fit rows' noise does not outrank one that holds on samples
+// the fit never saw. When no column passes, the best by ERR: the BIC rule
+// then refuses it.
+Scores score_heldout(const Eigen::MatrixXd& Q, const Eigen::VectorXd& own_norm2, const std::vector<bool>& taken,
+                     const Eigen::VectorXd& e, double ee, double explained, const CheckColumns& check,
+                     double bic_threshold) {
+  Scores s;
+  double best_ss = std::numeric_limits<double>::infinity(), second_ss = best_ss;
+  const double n = double(e.size()), nc = double(check.left.size());
+  for (Eigen::Index j = 0; j < Q.cols(); ++j) {
+    if (taken[std::size_t(j)]) continue;
+    const double err = err_of(Q, j, own_norm2, e, ee);
+    if (!(err > 0.0) || bic_change(err, explained, n) > bic_threshold) continue;
+    const double g = Q.col(j).dot(e) / Q.col(j).squaredNorm();
+    const double ss = (check.left - g * check.Q.col(j)).squaredNorm();
+    const ForwardStep step{int(j), err, 0.0, std::sqrt(ss / nc)};
+    if (ss < best_ss * (1.0 - kCheckTie)) {
+      s.second = s.best, second_ss = best_ss;
+      s.best = step, best_ss = ss;
+    } else if (ss < second_ss) {
+      s.second = step, second_ss = ss;
+    }
+  }
+  return s.best.column >= 0 ? s : score(Q, own_norm2, taken, e, ee);
 }
 
 // The chosen columns of P beside the fixed ones.
@@ -89,19 +140,19 @@ void fit_chosen(const RegressionRows& fit, const std::vector<int>& chosen, Forwa
   r.standard_errors = (variance.array().sqrt() / norm.array()).head(k);
 }
 
-// Removes from every column of Q and from e their part in the span of `fixed`.
-void project_out(const Eigen::MatrixXd& fixed, Eigen::MatrixXd& Q, Eigen::VectorXd& e) {
+// Removes from every column of Q and from e their part in the span of
+// `fixed`, and from the check rows the same combinations of their own fixed
+// columns, so that they stay the check rows of the same columns.
+void project_out(const Eigen::MatrixXd& fixed, Eigen::MatrixXd& Q, Eigen::VectorXd& e, CheckColumns* check) {
   if (fixed.cols() == 0) return;
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(fixed);
-  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(fixed.rows(), fixed.cols());
-  Q -= basis * (basis.transpose() * Q);
-  e -= basis * (basis.transpose() * e);
-}
-
-double bic_change(double err, double explained, double n) {
-  const double tiny = std::numeric_limits<double>::min();
-  const double left = std::max(1.0 - explained, tiny);
-  return n * std::log(std::max(1.0 - err / left, tiny)) + std::log(n);
+  const Eigen::MatrixXd B = qr.solve(Q);
+  const Eigen::VectorXd b = qr.solve(e);
+  Q -= fixed * B;
+  e -= fixed * b;
+  if (!check) return;
+  check->Q -= check->fixed * B;
+  check->left -= check->fixed * b;
 }
 
 // The fixed columns that are not combinations of others (a parameter at a
@@ -133,20 +184,30 @@ std::string refusal(const ForwardStep& step, std::size_t taken, double check_rms
   return "";
 }
 
-// Modified Gram–Schmidt: every remaining column loses its part along column c.
-void orthogonalise(Eigen::MatrixXd& Q, int c, const std::vector<bool>& taken) {
+// Modified Gram–Schmidt: every remaining column loses its part along column
+// c, and its check rows the same multiple of c's.
+void orthogonalise(Eigen::MatrixXd& Q, int c, const std::vector<bool>& taken, CheckColumns* check) {
   const Eigen::VectorXd q = Q.col(c);
+  const Eigen::VectorXd qc = check ? Eigen::VectorXd(check->Q.col(c)) : Eigen::VectorXd();
   const double qq = q.squaredNorm();
-  for (Eigen::Index j = 0; j < Q.cols(); ++j)
-    if (!taken[std::size_t(j)]) Q.col(j) -= (q.dot(Q.col(j)) / qq) * q;
+  for (Eigen::Index j = 0; j < Q.cols(); ++j) {
+    if (taken[std::size_t(j)]) continue;
+    const double a = q.dot(Q.col(j)) / qq;
+    Q.col(j) -= a * q;
+    if (check) check->Q.col(j) -= a * qc;
+  }
 }
 
-// The steps, on rows whose fixed columns are independent.
+// The steps, on rows whose fixed columns are independent. With check rows,
+// each step takes the column that lowers their residual most among those
+// the BIC rule admits; without, the largest ERR.
 void choose(const RegressionRows& fit, const RegressionRows* check, const ForwardRegressionOptions& options,
             ForwardRegression& r, std::vector<int>& chosen) {
   Eigen::MatrixXd Q = fit.P;
   Eigen::VectorXd left = fit.e;
-  project_out(fit.fixed, Q, left);
+  std::optional<CheckColumns> held;
+  if (check) held = CheckColumns{check->P, check->e, check->fixed};
+  project_out(fit.fixed, Q, left, held ? &*held : nullptr);
   const double ee = left.squaredNorm();
   r.fixed_share = fit.e.squaredNorm() > 0.0 ? 1.0 - ee / fit.e.squaredNorm() : 0.0;
   if (check) r.check_rms = rms_residual(*check, chosen, least_squares(fit, chosen));
@@ -156,7 +217,8 @@ void choose(const RegressionRows& fit, const RegressionRows* check, const Forwar
   r.first_err = Eigen::VectorXd::Zero(fit.P.cols());
   for (Eigen::Index j = 0; j < Q.cols() && ee > 0.0; ++j) r.first_err[j] = err_of(Q, j, own_norm2, left, ee);
   while (ee > 0.0) {
-    const Scores s = score(Q, own_norm2, taken, left, ee);
+    const Scores s = held ? score_heldout(Q, own_norm2, taken, left, ee, r.explained, *held, options.bic_threshold)
+                          : score(Q, own_norm2, taken, left, ee);
     ForwardStep step = s.best;
     step.runner_up = s.second.column;
     step.runner_up_err = s.second.err;
@@ -176,7 +238,8 @@ void choose(const RegressionRows& fit, const RegressionRows* check, const Forwar
     r.steps.push_back(step);
     r.explained += step.err;
     taken[std::size_t(step.column)] = true;
-    orthogonalise(Q, step.column, taken);
+    if (held) held->left -= Q.col(step.column).dot(left) / Q.col(step.column).squaredNorm() * held->Q.col(step.column);
+    orthogonalise(Q, step.column, taken, held ? &*held : nullptr);
   }
 }
 

@@ -8,8 +8,13 @@
 //
 //   ERR_j = (q_jᵀe)² / (q_jᵀq_j · eᵀe)
 //
-// is the share of the target's sum of squares it explains beyond them; the
-// column with the largest ERR is chosen. Because each candidate is judged
+// is the share of the target's sum of squares it explains beyond them.
+// Without check rows the column with the largest ERR is chosen. With check
+// rows (held-out samples), the choice is by held-out gain: among the columns
+// whose ERR passes the BIC rule below, the one whose least-squares fit on
+// the fit rows leaves the smallest residual on the check rows. The check
+// rows of every column go through the same orthogonalisation, so that
+// residual costs one pass over the check rows per column. Because each candidate is judged
 // only on what the chosen ones leave, two correlated candidates cannot both
 // be credited with the same variance, and a candidate that is nearly a
 // combination of chosen ones (q_jᵀq_j below 1e−10 of p_jᵀp_j) is skipped.
@@ -58,7 +63,7 @@ struct ForwardStep {
   double err = 0.0;        // share of eᵀe this column explains beyond the earlier ones
   double delta_bic = 0.0;  // of taking this step
   double check_rms = 0.0;  // RMS residual of the check rows after it (0 without check rows)
-  int runner_up = -1;      // the best other column at this step (-1: none)
+  int runner_up = -1;      // the best other column at this step, by the same rank (-1: none)
   double runner_up_err = 0.0;
 };
 
@@ -79,7 +84,8 @@ struct ForwardRegression {
   std::string refused_by;
 };
 
-// Deterministic: ties (ERRs equal to 1e−9) go to the lower column index.
+// Deterministic: ties (ERRs equal to 1e−9, check residuals to 1e−6) go to
+// the lower column index.
 ForwardRegression forward_regression(const RegressionRows& fit, const ForwardRegressionOptions& options = {},
                                      const RegressionRows* check = nullptr);
 
