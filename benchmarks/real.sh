@@ -4,9 +4,10 @@
 #   discover/     discover from msd on the estimation record, with the
 #                 benchmark's warm-up (the first samples initialise the model
 #                 and are never scored)
-#   proposals/    where the ladder ends beyond the catalog: propose on its
-#                 final fit; proposals/effect/ holds the first term as a plugin
-#   with_effect/  discover from the final model offered only that effect
+#   proposals/    where the ladder ends beyond the catalog: propose given the
+#                 discover folder (its sound rung: the last before a doubtful
+#                 addition); proposals/effect/ holds the first term as a plugin
+#   with_effect/  discover from that rung's model offered only that effect
 #   test_*/       compare of the final fit on each official test record
 # then <name>/README.md, README.md and summary.csv (one row per benchmark and
 # test record; RMSE after the warm-up, in the benchmark's unit).
@@ -50,19 +51,21 @@ done
 mkdir -p "$out"
 
 # Where the ladder ends beyond the catalog (completeness kind), the first
-# proposed term as an effect, and discovery from the final model offered it.
+# proposed term as an effect, and discovery from the rung propose extended
+# offered it.
 # Prints the fit to score.
 with_proposal() {
   local dir=$1 data=$2 kind
   kind=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["completeness"]["kind"])' \
          "$dir/discover/ladder.json")
   if [[ $kind != beyond_catalog ]]; then echo "$dir/discover/fit.json"; return; fi
-  "$exe" propose --data "$data" --fit "$dir/discover/fit.json" --out "$dir/proposals" --force >"$dir/proposals.log"
+  "$exe" propose --data "$data" --fit "$dir/discover" --out "$dir/proposals" --force >"$dir/proposals.log"
   if [[ ! -f "$dir/proposals/effect/CMakeLists.txt" ]]; then echo "$dir/discover/fit.json"; return; fi
   cmake -S "$dir/proposals/effect" -B "$dir/effect-build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build" >/dev/null
   cmake --build "$dir/effect-build" >/dev/null
   local start
-  start=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["final_model"])' "$dir/discover/ladder.json")
+  start=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["propose_from"]["model"])' \
+          "$dir/discover/ladder.json")
   "$exe" discover --data "$data" --start "$start" --plugin "$dir/effect-build/proposed_term.so" \
     --candidates proposed_term --max-steps 1 --warmup "${warmup[$b]}" --input-unit V --output-unit V \
     ${discover_options[@]+"${discover_options[@]}"} \
@@ -83,8 +86,12 @@ run_benchmark() {
   fit=$(with_proposal "$dir" "$data")
   echo "proposal_seconds=$((SECONDS - t0))" >>"$dir/timings.txt"
   echo "scored_fit=${fit#"$dir/"}" >>"$dir/timings.txt"
+  # A fit with the proposed effect needs its library to be simulated.
+  local plugin=()
+  [[ $fit == "$dir/with_effect/fit.json" ]] && plugin=(--plugin "$dir/effect-build/proposed_term.so")
   for t in ${tests[$b]}; do
-    "$exe" compare --data "$data_root/$b/$t.csv" --fit "$fit" --out "$dir/$t" --force >"$dir/$t.log"
+    "$exe" compare --data "$data_root/$b/$t.csv" --fit "$fit" ${plugin[@]+"${plugin[@]}"} --out "$dir/$t" --force \
+      >"$dir/$t.log"
   done
   # What is committed: reports, JSON, gnuplot scripts and PNG figures.
   rm -rf "$dir/effect-build"

@@ -14,7 +14,9 @@
 #     first, a product of two signals; its generated force (written with w
 #     = gain·v) takes msd's place with the same result;
 #   - quadratic damping: propose on a fitted msd ranks x'·|x'| first; its
-#     generated force takes msd's place with the same result;
+#     generated force takes msd's place with the same result; discover from
+#     msd refuses the catalog effect that stands in for it (the stopping
+#     share) and propose given that discover folder ranks it first too;
 #   - a play operator beside the gain: propose on a fitted msd ranks
 #     play(v, 25 %) first, and says why it writes no effect for it;
 #   - a gain that drifts with time, dry (Coulomb) friction and a play
@@ -93,6 +95,19 @@ force_case cubic_stiffness cubic "x³"
 # as a force of the resonance's output and its input.
 force_case drive_stiffness drive "|v|·x"
 force_case quadratic_damping drag "x'·|x'|"
+# The stopping share (docs/discovery.md, "Beyond the catalog"): hysteresis
+# stands in for the drag with under 30 % of the excess error, so discover
+# refuses it and stops at msd, beyond the catalog; propose given the
+# discover folder extends that rung and ranks the drag first.
+"$hystbench" discover --data drag.csv --start msd --max-steps 1 --out drag-ladder > drag-ladder.txt
+grep -q "^final model: msd$" drag-ladder.txt || fail "quadratic_damping: discover added a catalog effect: $(cat drag-ladder.txt)"
+grep -q '"kind": "beyond_catalog"' drag-ladder/ladder.json ||
+  fail "quadratic_damping: the ladder does not say the missing physics is beyond the catalog"
+"$hystbench" propose --data drag.csv --fit drag-ladder --out drag-from-ladder > drag-from-ladder.txt
+grep -q "^propose extends step 0 (msd)" drag-from-ladder.txt ||
+  fail "quadratic_damping: propose given the discover folder does not say which rung it extends: $(cat drag-from-ladder.txt)"
+grep -qF "  1. dynamics: x'·|x'|  " drag-from-ladder.txt ||
+  fail "quadratic_damping: from the discover folder the first proposal is not x'·|x'|: $(cat drag-from-ladder.txt)"
 # A play operator beside the gain: a term of the library that no generated
 # effect has, proposed with no effect written, and said so.
 "$planted" parallel_play play.csv 4000

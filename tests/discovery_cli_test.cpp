@@ -269,6 +269,13 @@ TEST_F(DiscoveryCli, BadInputGetsOneMessageAndExitTwo) {
   r = run("fit --data " + path("data.csv") + " --model msd --optimizer nope --out " + path("v"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("jso"), std::string::npos) << "names the optimizers: " << r.output;
+
+  // propose given a folder that is no discover folder.
+  fs::create_directories(dir_ / "not_a_ladder");
+  r = run("propose --data " + path("data.csv") + " --fit " + path("not_a_ladder") + " --out " + path("u"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("a folder without ladder.json"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "u"));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/ladder_report.hpp"
 #include "framework/discovery/separability.hpp"
+#include "framework/discovery/sound_rung.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
 #include "framework/io/truth_file.hpp"
@@ -123,6 +124,8 @@ void run_discover(DiscoverCommandOptions& o) {
             << "complete: " << (ladder.completeness().complete ? "yes" : "no") << ". "
             << ladder.completeness().reason << "\n";
   print_what_the_record_cannot_tell(ladder);
+  if (!ladder.completeness().complete)
+    std::cout << "given --fit " << dir.string() << ", " << sound_rung(ladder).sentence() << "\n";
   if (!note.empty()) std::cout << note << "\n";
   std::cout << "wrote " << (dir / "ladder.md").string() << ", ladder.json and fit.json\n";
 }

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -80,13 +81,28 @@ nlohmann::json effect_json(const GeneratedEffect& e) {
   return {{"source", "effect/" + e.name + ".cpp"}, {"model", e.model}};
 }
 
+// The fit file --fit names: the file itself, or in a discover folder the
+// rung its ladder.json says propose extends (sound_rung.hpp), said on stdout.
+std::string fit_file(const std::string& given) {
+  if (!std::filesystem::is_directory(given)) return given;
+  const auto dir = std::filesystem::path(given);
+  if (!std::filesystem::exists(dir / "ladder.json"))
+    throw InputError("--fit " + given + ": a folder without ladder.json; give a fit.json, or a discover folder");
+  const nlohmann::json ladder = read_json_file((dir / "ladder.json").string(), "ladder file");
+  const nlohmann::json from = ladder.value("propose_from", nlohmann::json());
+  if (!from.is_object()) return (dir / "fit.json").string();  // written before the rung was chosen
+  std::cout << from.value("sentence", "") << "\n";
+  return (dir / from.value("fit", "fit.json")).string();
+}
+
 void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   check_options(o);
-  const nlohmann::json file = read_json_file(o.from_fit, "fit file");
+  const std::string from_fit = fit_file(o.from_fit);
+  const nlohmann::json file = read_json_file(from_fit, "fit file");
   if (SvrHammerstein::is_model_file(file))
-    throw InputError("--fit " + o.from_fit + ": an SVR model has no chain for a term to enter; propose extends a "
+    throw InputError("--fit " + from_fit + ": an SVR model has no chain for a term to enter; propose extends a "
                      "catalog model's fit.json (hystbench fit, diagnose or discover)");
-  const FitRecord fit = FitRecord::read(o.from_fit);
+  const FitRecord fit = FitRecord::read(from_fit);
   DataSource source = o.data.source();
   // The fit's own hold-out on its own data, so that the held-out check
   // judges on samples the fit never saw.
@@ -101,7 +117,7 @@ void run_propose(const ProposeCommandOptions& o, bool holdout_given) {
   const GeneratedEffect effect = write_effect(p, o, source, fit, dir);
   nlohmann::json out = p.to_json();
   out["data"] = source.to_json();
-  out["fit"] = o.from_fit;
+  out["fit"] = from_fit;
   out["effect"] = effect_json(effect);
   out["provenance"] = provenance(1, 0);
   write_file_atomic(dir / "proposals.json", out.dump(2) + "\n");
@@ -124,7 +140,8 @@ Action add_propose_command(CLI::App& app) {
                  "model's own signals, each entering where its signal lives; writes proposals.json, proposals.md and the first term as an effect "
                  "plugin (effect/NAME.cpp)");
   add_data_options(cmd, o->data);
-  cmd->add_option("--fit", o->from_fit, "fit.json of the model to extend (hystbench fit, diagnose or discover)")
+  cmd->add_option("--fit", o->from_fit, "fit.json of the model to extend (hystbench fit, diagnose or discover), or a discover folder: "
+                  "then the last rung whose added effects the data support")
       ->required();
   cmd->add_option("--degree", o->propose.degree, "largest total degree of a term (1-6)")->capture_default_str();
   cmd->add_option("--max-terms", o->propose.regression.max_terms, "terms proposed at most")->capture_default_str();

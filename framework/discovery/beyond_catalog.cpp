@@ -126,7 +126,7 @@ void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
       " The missing physics may not be in the catalog: " + b.advice + ".";
 }
 
-std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name) {
+std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name, const std::string& fit) {
   if (!b.applies) return "";
   std::string out = "## Beyond the catalog\n\nSomething systematic is left and no catalog effect captures it.\n\n"
                     "Where the error concentrates:\n\n";
@@ -139,7 +139,7 @@ std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& d
   out += ".\n\nThe missing physics may not be in the catalog. `hystbench propose` regresses the residual on "
          "powers, play operators and products of the model's own signals and writes the best as an effect plugin "
          "(docs/discovery.md, \"Proposing a missing term\"):\n\n"
-         "```sh\nhystbench propose --data DATA --fit DIR/fit.json --out DIR/proposals\n```\n\n"
+         "```sh\nhystbench propose --data DATA --fit " + fit + " --out DIR/proposals\n```\n\n"
          "with DATA the measurement (" + data_name + ") and DIR this folder.\n\n";
   return out;
 }

@@ -8,15 +8,17 @@
 // run `hystbench propose`.
 //
 // Partial help is not enough: a significant candidate is added only when it
-// removes at least a quarter of what the current model leaves above the
-// noise on the held-out data (on the estimation data when nothing is held
-// out),
+// removes at least 40 % of what the current model leaves above the noise on
+// the held-out data (on the estimation data when nothing is held out),
 //
-//   share = (RMSE_before² − RMSE_after²) / (RMSE_before² − σ²)  ≥  0.25,
+//   share = (RMSE_before² − RMSE_after²) / (RMSE_before² − σ²)  ≥  0.4,
 //
 // σ the noise estimate. The rule applies only while the fit is above the
-// noise floor (completeness kind "systematic"). Every catalog effect that
-// found a hidden effect of the benchmark removed more than 70 % of it.
+// noise floor (completeness kind "systematic"). Where 0.4 comes from
+// (benchmarks/stopping_share.sh, results/stopping_share): catalog effects
+// standing in for physics the catalog lacks removed at most 30 % (a drag
+// growing with speed taken as hysteresis: 28 %), every hidden catalog effect
+// at least 71 %, and the additions on the measured benchmarks at least 57 %.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -27,7 +29,7 @@ namespace hystbench {
 
 struct Diagnosis;
 
-constexpr double kPartialShare = 0.25;
+constexpr double kPartialShare = 0.4;
 
 // The share above, NaN when the model is at or below the noise (no excess).
 double excess_share(double rmse_before, double rmse_after, double sigma);
@@ -55,8 +57,10 @@ struct BeyondCatalog {
 double candidate_share(const Diagnosis& d, const std::string& effect);
 
 // The "Beyond the catalog" section of report.md and ladder.md ("" when it
-// does not apply); `data_name` names the measurement in the propose command.
-std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name);
+// does not apply); `data_name` names the measurement in the propose command,
+// `fit` what it extends (a discover folder: its sound rung, sound_rung.hpp).
+std::string beyond_catalog_markdown(const BeyondCatalog& b, const std::string& data_name,
+                                    const std::string& fit = "DIR/fit.json");
 
 // Fills d.beyond and turns d.completeness into "beyond_catalog" when the
 // verdict is "none" and something systematic is left; otherwise nothing.

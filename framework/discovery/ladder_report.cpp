@@ -12,6 +12,7 @@
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/ladder_checkpoint.hpp"
 #include "framework/discovery/separability.hpp"
+#include "framework/discovery/sound_rung.hpp"
 #include "framework/io/atomic_file.hpp"
 #include "framework/report/figures.hpp"
 #include "framework/report/gnuplot_script.hpp"
@@ -137,6 +138,7 @@ nlohmann::json ladder_json(const Ladder& ladder, const LadderContext& ctx) {
                       {"inseparable", inseparable_json(ladder)},
                       {"startup_transient", ladder.diagnoses.back().where.startup.to_json()},
                       {"final_model", ladder.steps.back().model.text()},
+                      {"propose_from", sound_rung(ladder).to_json()},
                       {"stopped_by_limit", ladder.stopped_by_limit},
                       {"noise_floor", {{"estimated_sigma", estimated_sigma(ladder)}}},
                       {"data", ctx.source.to_json()},
@@ -220,8 +222,8 @@ std::string ladder_markdown(const Ladder& ladder, const LadderContext& ctx) {
     if (ladder.diagnoses[k].optimum.triggered)
       out << "\nStep " << k << ": the fit looked off its optimum (" << ladder.diagnoses[k].optimum.reason
           << "); " << join(ladder.diagnoses[k].optimum.actions, "; ") << ".\n";
-  const std::string beyond = beyond_catalog_markdown(ladder.diagnoses.back().beyond, ctx.source.file_name());
-  if (!beyond.empty()) out << "\n" << beyond;
+  const std::string beyond = beyond_catalog_markdown(ladder.diagnoses.back().beyond, ctx.source.file_name(), "DIR");
+  if (!beyond.empty()) out << "\n" << beyond << "Given this folder, " << sound_rung(ladder).sentence() << "\n\n";
   out << "\n" << excitation_section(ladder);
   out << "\n" << parameters_section(ladder.diagnoses.back().check);
   out << "\nThe last diagnosis: [step_" << ladder.steps.size() - 1 << "/report.md](step_"
