@@ -1,10 +1,11 @@
 // Proposed from data by `hystbench propose`: the term x³ at the dynamics stage,
 // from the residual of the model hysteresis,asymmetry,msd,arx fitted to data.csv. It explained 93 %
-// of what that fit left; proposed coefficient -0.00743421 ± 2.2e-05 (normalised units).
+// of what that fit left; proposed coefficient -0.0054537 ± 8.6e-05 (normalised units).
 //
 //   signal[k] += c·x³,   x' = (x[k] − x[k−1]) / Ts,   x'[0] = 0
 //
-// with x the resonance's own output (the force depends on the output it drives). c = 0 leaves the signal unchanged.
+// with x the resonance's own output (the force depends on the output it drives).
+// c = 0 leaves the signal unchanged.
 // Written as one per-sample kernel (framework/model/kernel_effect.hpp), which
 // gives the effect its batched form: candidates are fitted a block at a time,
 // as the catalog's effects are. Build: see docs/plugins.md (out of the tree: a
@@ -50,19 +51,20 @@ V factor(V a, int power, bool odd, bool root = false) {
   return m;
 }
 
+// The term of the block's own signal a and of b (unused: the term is of one signal).
 template <class V>
-V term(V a, V a_rate) {
+V term(V a, V a_rate, [[maybe_unused]] V b, [[maybe_unused]] V b_rate) {
   return factor(a, 3, true) * factor(a_rate, 0, false);
 }
 
 // Residual signature: the residual follows the term, built from the model output.
 hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
-  const Eigen::VectorXd& a = r.y_model;
+  const Eigen::VectorXd &a = r.y_model, &b = r.u;
   Eigen::VectorXd phi(a.size());
-  double previous = a.size() ? a[0] : 0.0;  // no rate before the record
+  double previous = a.size() ? a[0] : 0.0, b_previous = b.size() ? b[0] : 0.0;  // no rate before the record
   for (Eigen::Index k = 0; k < a.size(); ++k) {
-    phi[k] = term(a[k], (a[k] - previous) / r.sample_time);
-    previous = a[k];
+    phi[k] = term(a[k], (a[k] - previous) / r.sample_time, b[k], (b[k] - b_previous) / r.sample_time);
+    previous = a[k], b_previous = b[k];
   }
   return {hystbench::correlation(r.e, phi)};
 }
@@ -78,7 +80,7 @@ class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 6, hystbench::
     i.extends = "msd";
     i.params = {{"period", 0, 0.20000000000000001, 0, 0, 0, "s", "natural period 1/f_n (0 = infinitely stiff: no resonance)"},
                 {"zeta", 0.0050000000000000001, 2, 0.5, 0, 0, "", "damping ratio"},
-                {"c", -0.074342103949181698, 0.074342103949181698, 0, -2, 0, "", "coefficient of the proposed term"}};
+                {"c", -0.054536961736426505, 0.054536961736426505, 0, -2, 0, "", "coefficient of the proposed term"}};
     i.signature = "the residual follows x³";
     i.statistic = {"corr(e, x³)", term_correlation, "the residual follows x³ (r = {value})"};
     return i;
@@ -109,23 +111,27 @@ class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 6, hystbench::
   struct State {
     hystbench::BiquadState<V> resonance{};
     V x1{};      // the output one sample earlier
+    V b1{};      // b one sample earlier
     V finite{};  // 0 while every output is finite and every force was solved
+    bool started = false;  // no rate of b before the record
   };
 
   template <class V, class Drive>
-  static V sample(const std::array<V, 6>& c, const Aux& aux, State<V>& s, V w, Drive) {
+  static V sample(const std::array<V, 6>& c, const Aux& aux, State<V>& s, V w, [[maybe_unused]] Drive drive) {
     const std::array<V, 5> g = {c[0], c[1], c[2], c[3], c[4]};
     const V coefficient = c[5], one = V{} + 1.0;
+    const V b = V{}, b_rate = s.started ? (b - s.b1) / aux.ts : V{};
+    s.b1 = b, s.started = true;
     // The output for a given input of the resonance at this sample, its state left as it is.
     const auto output = [&](V input) {
       const V gw = ((g[0] * input + g[1] * s.resonance.w1) + (g[2] * s.resonance.w2 - g[4] * s.resonance.y2)) -
                    g[3] * s.resonance.y1;
       return input - gw;
     };
-    // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts)),
+    // The force depends on the output it drives: x = output(w + c·term(x, (x − x1)/Ts, b, b')),
     // solved by Newton's method from the previous output, every lane on its own
     // (a lane stops when it has converged, or fails when it cannot).
-    const auto residual = [&](V x) { return x - output(w + coefficient * term(x, (x - s.x1) / aux.ts)); };
+    const auto residual = [&](V x) { return x - output(w + coefficient * term(x, (x - s.x1) / aux.ts, b, b_rate)); };
     V x = s.x1;
     auto done = coefficient == V{};  // no force: nothing to solve
     auto failed = coefficient != coefficient;  // none yet
@@ -140,7 +146,7 @@ class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 6, hystbench::
       done = done ? done : (close | broken);
     }
     failed = failed | (done == decltype(done){});  // no output consistent with its force: diverging
-    const V force = coefficient == V{} ? V{} : coefficient * term(x, (x - s.x1) / aux.ts);
+    const V force = coefficient == V{} ? V{} : coefficient * term(x, (x - s.x1) / aux.ts, b, b_rate);
     const V input = w + force;
     const V out = input - hystbench::biquad_step(g, s.resonance, input);
     s.x1 = out;

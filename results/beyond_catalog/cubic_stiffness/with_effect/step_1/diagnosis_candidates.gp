@@ -9,7 +9,7 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 0.01013470713  # current model, estimation RMSE
-current_heldout = 0.0100241782  # current model, held-out RMSE
+current_estimation = 0.01013582477  # current model, estimation RMSE
+current_heldout = 0.01002419416  # current model, held-out RMSE
 sigma = 0.009756945923  # noise floor estimate
 # No candidate effect was tried: nothing to draw.

@@ -1,10 +1,11 @@
 // Proposed from data by `hystbench propose`: the term v·|v'| at the static stage,
 // from the residual of the model hysteresis,asymmetry,msd,arx fitted to data.csv. It explained 97.3 %
-// of what that fit left; proposed coefficient 0.000400387 ± 6.8e-07 (normalised units).
+// of what that fit left; proposed coefficient 0.00039782 ± 6.8e-07 (normalised units).
 //
 //   signal[k] += c·v·|v'|,   v' = (v[k] − v[k−1]) / Ts,   v'[0] = 0
 //
-// with v the drive (the stage input). c = 0 leaves the signal unchanged.
+// with v the drive (the stage input).
+// c = 0 leaves the signal unchanged.
 // Written as one per-sample kernel (framework/model/kernel_effect.hpp), which
 // gives the effect its batched form: candidates are fitted a block at a time,
 // as the catalog's effects are. Build: see docs/plugins.md (out of the tree: a
@@ -48,19 +49,20 @@ V factor(V a, int power, bool odd, bool root = false) {
   return m;
 }
 
+// The term of the block's own signal a and of b (unused: the term is of one signal).
 template <class V>
-V term(V a, V a_rate) {
+V term(V a, V a_rate, [[maybe_unused]] V b, [[maybe_unused]] V b_rate) {
   return factor(a, 1, true) * factor(a_rate, 1, false);
 }
 
 // Residual signature: the residual follows the term, built from the input u.
 hystbench::SignatureValue term_correlation(const hystbench::ResidualView& r) {
-  const Eigen::VectorXd& a = r.u;
+  const Eigen::VectorXd &a = r.u, &b = r.u;
   Eigen::VectorXd phi(a.size());
-  double previous = a.size() ? a[0] : 0.0;  // no rate before the record
+  double previous = a.size() ? a[0] : 0.0, b_previous = b.size() ? b[0] : 0.0;  // no rate before the record
   for (Eigen::Index k = 0; k < a.size(); ++k) {
-    phi[k] = term(a[k], (a[k] - previous) / r.sample_time);
-    previous = a[k];
+    phi[k] = term(a[k], (a[k] - previous) / r.sample_time, b[k], (b[k] - b_previous) / r.sample_time);
+    previous = a[k], b_previous = b[k];
   }
   return {hystbench::correlation(r.e, phi)};
 }
@@ -73,7 +75,7 @@ class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 1, hystbench::
     i.summary = "proposed from data: c·v·|v'| at the static stage";
     i.citation = "proposed from data by hystbench propose (data.csv, residual of hysteresis,asymmetry,msd,arx)";
     i.stage = hystbench::EffectStage::Nonlinearity;
-    i.params = {{"c", -0.0040038710310089107, 0.0040038710310089107, 0, 1, -2, "s", "coefficient of the proposed term"}};
+    i.params = {{"c", -0.0039782033873101749, 0.0039782033873101749, 0, 1, -2, "s", "coefficient of the proposed term"}};
     i.signature = "the residual follows v·|v'|";
     i.statistic = {"corr(e, v·|v'|)", term_correlation, "the residual follows v·|v'| (r = {value})"};
     return i;
@@ -94,18 +96,19 @@ class ProposedTerm : public hystbench::KernelEffect<ProposedTerm, 1, hystbench::
 
   template <class V>
   struct State {
-    V previous{};
+    V previous{}, b_previous{};
     V finite{};  // 0 while every output is finite
     bool started = false;  // no rate before the record
   };
 
   template <class V, class Drive>
   static V sample(const std::array<V, 1>& c, const Aux& aux, State<V>& s, V signal, [[maybe_unused]] Drive drive) {
-    const V a = drive;
+    const V a = drive, b = V{};
     const V rate = s.started ? (a - s.previous) / aux.ts : V{};
-    s.previous = a;
+    const V b_rate = s.started ? (b - s.b_previous) / aux.ts : V{};
+    s.previous = a, s.b_previous = b;
     s.started = true;
-    const V out = signal + c[0] * term(a, rate);
+    const V out = signal + c[0] * term(a, rate, b, b_rate);
     s.finite += out * 0.0;
     return out;
   }

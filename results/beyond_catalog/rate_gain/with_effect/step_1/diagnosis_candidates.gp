@@ -10,6 +10,6 @@
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
 current_estimation = 0.009933856052  # current model, estimation RMSE
-current_heldout = 0.01001948821  # current model, held-out RMSE
+current_heldout = 0.01001948815  # current model, held-out RMSE
 sigma = 0.009759953481  # noise floor estimate
 # No candidate effect was tried: nothing to draw.

@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Current model proposed_term,arx" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.05914183768:0.05914183768]
+  set yrange [-0.05956209538:0.05956209538]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
