@@ -10,6 +10,7 @@
 
 #include "framework/core/error.hpp"
 #include "framework/discovery/beyond_catalog.hpp"
+#include "framework/discovery/diagnosis.hpp"
 #include "framework/discovery/effect_source.hpp"
 #include "framework/discovery/model_fit.hpp"
 #include "framework/discovery/proposal.hpp"
@@ -248,6 +249,29 @@ TEST(BeyondCatalog, ExcessShareIsWhatACandidateRemovesAboveTheNoise) {
   EXPECT_DOUBLE_EQ(excess_share(5.0, 3.0, 0.0), 16.0 / 25.0);
   EXPECT_DOUBLE_EQ(excess_share(5.0, 4.0, 3.0), 9.0 / 16.0);
   EXPECT_TRUE(std::isnan(excess_share(1.0, 0.9, 1.0)));
+}
+
+// A candidate that removes `after` of a held-out RMSE of 5 above a noise of 3
+// (an excess of 16).
+Diagnosis systematic_with(double after) {
+  Diagnosis d{Model::parse("msd"), {}, {}};
+  d.errors.n_heldout = 100;
+  d.errors.rmse_heldout = 5.0;
+  d.completeness.kind = "systematic";
+  d.completeness.sigma = 3.0;
+  Candidate c{"creep", Model::parse("msd,creep"), {}, {}};
+  c.after.n_heldout = 100;
+  c.after.rmse_heldout = after;
+  d.candidates.push_back(c);
+  return d;
+}
+
+TEST(BeyondCatalog, LeadersAreRefitOnlyWhenOneCouldReachTheStoppingShare) {
+  EXPECT_FALSE(refit_could_pass(systematic_with(4.9)));  // (25 - 24.01) / 16: 6 %
+  EXPECT_TRUE(refit_could_pass(systematic_with(4.8)));   // (25 - 23.04) / 16: 12 %
+  Diagnosis at_floor = systematic_with(4.9);
+  at_floor.completeness.kind = "coloured_at_floor";  // the partial-help rule does not apply there
+  EXPECT_TRUE(refit_could_pass(at_floor));
 }
 
 struct PlantedFit {

@@ -93,6 +93,13 @@ double candidate_share(const Diagnosis& d, const std::string& effect) {
                       held ? c->after.rmse_heldout : c->after.rmse_estimation, d.completeness.sigma);
 }
 
+bool refit_could_pass(const Diagnosis& d) {
+  if (d.completeness.kind != "systematic") return true;
+  for (const Candidate& c : d.candidates)
+    if (candidate_share(d, c.effect) >= 0.25 * kPartialShare) return true;
+  return false;
+}
+
 void describe_beyond_catalog(Diagnosis& d, const ModelData& data) {
   if (d.verdict != "none" || d.completeness.complete || d.completeness.kind != "systematic") return;
   BeyondCatalog& b = d.beyond;

@@ -56,6 +56,15 @@ struct BeyondCatalog {
 // is held out).
 double candidate_share(const Diagnosis& d, const std::string& effect);
 
+// Whether refitting the leading candidates could change a verdict the
+// partial-help rule would otherwise refuse: false above the noise floor when
+// no candidate's screened fit removes even a quarter of kPartialShare (10 %)
+// of the excess. A refit restores a candidate a poor basin had hidden, but
+// from under 10 % to 40 % it would have to quadruple what the candidate
+// removed; in results/hidden_effects no verdict depends on such a refit, and
+// on Silverbox's last rung (best share 1.5 %) it cost two minutes.
+bool refit_could_pass(const Diagnosis& d);
+
 // The "Beyond the catalog" section of report.md and ladder.md ("" when it
 // does not apply); `data_name` names the measurement in the propose command,
 // `fit` what it extends (a discover folder: its sound rung, sound_rung.hpp).

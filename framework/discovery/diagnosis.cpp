@@ -218,7 +218,8 @@ std::vector<Candidate> try_candidates(const Diagnosis& d, const ModelData& data,
 // against the ARX block's lag lands a fraction of a sample off, with the
 // ARX coefficients bent to match). So the two candidates with the lowest
 // ΔBIC get a plain fit's global restarts, with seeds of their own, and keep
-// the better fit before the verdict.
+// the better fit before the verdict, unless no candidate comes near what
+// the partial-help rule asks (refit_could_pass, beyond_catalog.hpp).
 void refit_leaders(Diagnosis& d, const ModelData& data, const DiagnoseOptions& o) {
   if (o.fit.restarts == 0 || d.completeness.white) return;
   std::vector<Candidate*> leaders;
@@ -228,6 +229,7 @@ void refit_leaders(Diagnosis& d, const ModelData& data, const DiagnoseOptions& o
             [](const Candidate* a, const Candidate* b) { return a->delta_bic < b->delta_bic; });
   if (leaders.size() > 2) leaders.resize(2);
   if (leaders.empty()) return;
+  if (!refit_could_pass(d)) return;
   std::string names;
   for (const auto* c : leaders) names += (names.empty() ? "" : ", ") + c->effect;
   if (o.fit.status)
