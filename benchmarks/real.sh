@@ -3,7 +3,8 @@
 # scores them (docs/discovery.md, "Measured benchmarks"). For each benchmark:
 #   discover/     discover from msd on the estimation record, with the
 #                 benchmark's warm-up (the first samples initialise the model
-#                 and are never scored)
+#                 and are never scored; on the tanks they also set the level
+#                 the record starts from, --initial-state held)
 #   proposals/    where the ladder ends beyond the catalog: propose given the
 #                 discover folder (its sound rung: the last before a doubtful
 #                 addition); proposals/effect/ holds the first term as a plugin
@@ -38,8 +39,11 @@ read -r -a discover_options <<<"${DISCOVER_OPTIONS:-}"
 [[ -x "$exe" ]] || { echo "real.sh: $exe is missing; build hystbench first" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "real.sh: python3 is needed" >&2; exit 2; }
 
-# name  warm-up  test records
+# name  warm-up  initial state  test records
 declare -A warmup=([silverbox]=50 [cascaded_tanks]=5)
+# The tanks' records start half full, not at rest: their first outputs set
+# the level (docs/discovery.md, "Initial state"). Silverbox starts at rest.
+declare -A initial=([silverbox]=rest [cascaded_tanks]=held)
 declare -A tests=([silverbox]="test_multisine test_arrow_full test_arrow_no_extrapolation" [cascaded_tanks]="test")
 benchmarks=${BENCHMARKS:-silverbox cascaded_tanks}
 for b in $benchmarks; do
@@ -67,7 +71,7 @@ with_proposal() {
   start=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["propose_from"]["model"])' \
           "$dir/discover/ladder.json")
   "$exe" discover --data "$data" --start "$start" --plugin "$dir/effect-build/proposed_term.so" \
-    --candidates proposed_term --max-steps 1 --warmup "${warmup[$b]}" --input-unit V --output-unit V \
+    --candidates proposed_term --max-steps 1 --warmup "${warmup[$b]}" --initial-state "${initial[$b]}" --input-unit V --output-unit V \
     ${discover_options[@]+"${discover_options[@]}"} \
     --out "$dir/with_effect" --force >"$dir/with_effect.log"
   echo "$dir/with_effect/fit.json"
@@ -77,7 +81,7 @@ run_benchmark() {
   local b=$1 dir="$out/$1" data="$data_root/$1/estimation.csv"
   rm -rf "$dir" && mkdir -p "$dir"
   local t0=$SECONDS
-  "$exe" discover --data "$data" --start msd --warmup "${warmup[$b]}" --max-steps "$max_steps" \
+  "$exe" discover --data "$data" --start msd --warmup "${warmup[$b]}" --initial-state "${initial[$b]}" --max-steps "$max_steps" \
     --input-unit V --output-unit V ${discover_options[@]+"${discover_options[@]}"} --out "$dir/discover" --force | tee "$dir/discover.log" >&2
   { echo "discover_seconds=$((SECONDS - t0))"; echo "max_steps=$max_steps"
     echo "discover_options=${DISCOVER_OPTIONS:-}"; } >"$dir/timings.txt"

@@ -4,7 +4,8 @@
     real_summary.py OUT_DIR BENCHMARK...
 
 RMSE is read from each test record's compare metrics.json ("all": every
-sample after the warm-up, simulated from u alone) and given in the
+sample after the warm-up, simulated from u, on the tanks from the level the
+warm-up sets) and given in the
 benchmark's unit. The published numbers are those of the data's own
 README files (nonlinear_benchmarks split).
 """
@@ -69,9 +70,19 @@ def rows_of(out, name):
 
 
 def warmup_of(fit):
-    """The warm-up a fit was made with: its hold-out text ends "+warmup:N"."""
+    """The warm-up a fit was made with: its hold-out text has "+warmup:N" (then "+held" for a held start)."""
     holdout = fit.get("holdout", "")
-    return int(holdout.split("warmup:")[1]) if "warmup:" in holdout else 0
+    return int(holdout.split("warmup:")[1].split("+")[0]) if "warmup:" in holdout else 0
+
+
+def simulated_from(directory, t):
+    """How a test record is simulated: from u alone, or also from the level its warm-up outputs set."""
+    fit = load(os.path.join(directory, t["scored_fit"]))
+    if fit.get("holdout", "").endswith("+held"):
+        return ("simulated from u, starting where a long-held input leaves the model, at the level that "
+                "matches the warm-up's outputs (`--initial-state held`; the benchmark lets its first outputs "
+                "set the initial state)")
+    return "simulated from u alone"
 
 
 def number(v):
@@ -86,7 +97,7 @@ def benchmark_readme(out, name, rows, t):
     lines = [f"# {spec['title']}\n",
              "Made by `benchmarks/real.sh`. `discover` from `msd` on `estimation.csv` only, with a warm-up of "
              f"{rows[0]['warmup'] if rows else '?'} samples (simulated, never fitted or scored), then `compare` "
-             "of the scored fit on each test record, simulated from u alone. RMSE after the warm-up, the "
+             f"of the scored fit on each test record, {simulated_from(directory, t)}. RMSE after the warm-up, the "
              "benchmark's own way.\n",
              f"- Ladder: [discover/ladder.md](discover/ladder.md); final model `{ladder['final_model']}`, "
              f"complete: {'yes' if ladder['complete'] else 'no'} ({ladder['completeness']['kind']}).",

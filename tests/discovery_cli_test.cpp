@@ -247,6 +247,29 @@ TEST_F(DiscoveryCli, AWarmUpIsNeverScoredAndTravelsWithTheFit) {
   EXPECT_FALSE(fs::exists(dir_ / "wb" / "fit.json"));
 }
 
+TEST_F(DiscoveryCli, AHeldStartTravelsWithTheFitAndNeedsAWarmUp) {
+  const auto f = run("fit --data " + path("data.csv") + " --model msd,offset --warmup 20 --initial-state held --out " +
+                     path("h") + kQuick);
+  ASSERT_EQ(f.code, 0) << f.output;
+  EXPECT_EQ(read_json(dir_ / "h" / "fit.json")["holdout"], "auto+warmup:20+held");
+  // compare starts any record the same way unless told otherwise.
+  const auto c = run("compare --data " + path("data.csv") + " --fit " + path("h/fit.json") + " --out " + path("hc"));
+  ASSERT_EQ(c.code, 0) << c.output;
+  EXPECT_EQ(read_json(dir_ / "hc" / "metrics.json")["all"]["n"], 1180);
+  const auto rest = run("compare --data " + path("data.csv") + " --fit " + path("h/fit.json") +
+                        " --warmup 0 --out " + path("hr"));
+  EXPECT_EQ(rest.code, 2);
+  EXPECT_NE(rest.output.find("give --warmup N (N of 1 or more, e.g. 5), or --initial-state rest"), std::string::npos)
+      << rest.output;
+  EXPECT_FALSE(fs::exists(dir_ / "hr" / "metrics.json"));
+  const auto bad = run("fit --data " + path("data.csv") + " --model msd --initial-state held --out " + path("hb"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("--initial-state held: the held level is matched to the warm-up samples"),
+            std::string::npos)
+      << bad.output;
+  EXPECT_FALSE(fs::exists(dir_ / "hb" / "fit.json"));
+}
+
 TEST_F(DiscoveryCli, BadInputGetsOneMessageAndExitTwo) {
   auto r = run("fit --data " + path("data.csv") + " --model msd,creeep --out " + path("x"));
   EXPECT_EQ(r.code, 2);

@@ -33,7 +33,9 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
     return data_for_fit(o.data, fit, source, cmd.count("--holdout") > 0, HoldoutSpec::Mode::None);
   DataOptions whole = o.data;
   whole.holdout = "none";
-  whole.warmup = whole.warmup.value_or(0);  // the steady state is scored: nothing to warm up
+  // The steady state is scored: nothing to warm up, no start to match.
+  whole.warmup = whole.warmup.value_or(0);
+  whole.initial_state = whole.initial_state.value_or("rest");
   return data_for_fit(whole, fit, source, true, HoldoutSpec::Mode::None);
 }
 

@@ -71,7 +71,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   // meaning) or a model to fit first.
   std::optional<FitRecord> start;
   if (cmd.count("--fit")) start = FitRecord::read(o.from_fit);
-  if (start && !o.data.warmup && holdout.warmup == 0) holdout.warmup = start->holdout.warmup;
+  if (start) o.data.take_start(holdout, start->holdout);
   Model model = start ? start->model : Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
   const ModelData data =

@@ -21,8 +21,21 @@ DataSource DataOptions::source() const {
 
 HoldoutSpec DataOptions::holdout_spec() const {
   HoldoutSpec spec = HoldoutSpec::parse(holdout);
-  if (warmup) spec.warmup = *warmup;  // else the hold-out text's own (auto+warmup:N), or 0
+  // Else the hold-out text's own (auto+warmup:N+held), or 0 and rest.
+  if (warmup) spec.warmup = *warmup;
+  if (initial_state) spec.held_start = *initial_state == "held";
   return spec;
+}
+
+void DataOptions::take_start(HoldoutSpec& spec, const HoldoutSpec& fit) const {
+  if (warmup)
+    spec.warmup = *warmup;
+  else if (spec.warmup == 0)
+    spec.warmup = fit.warmup;
+  if (initial_state)
+    spec.held_start = *initial_state == "held";
+  else if (!spec.held_start)
+    spec.held_start = fit.held_start;
 }
 
 namespace {
@@ -51,10 +64,7 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
     holdout = fit.holdout;
   else
     holdout.mode = elsewhere;
-  if (o.warmup)
-    holdout.warmup = *o.warmup;
-  else if (holdout.warmup == 0)
-    holdout.warmup = fit.holdout.warmup;
+  o.take_start(holdout, fit.holdout);
   return prepare_model_data(m, fit.scales, holdout);
 }
 
@@ -78,6 +88,11 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
                   "unknown initial state): simulated, never fitted or scored (benchmarks: "
                   "Silverbox 50, cascaded tanks 5; default 0, or the fit's own)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--initial-state", o.initial_state,
+                  "rest: the model starts at rest; held: where a long-held input leaves it, at "
+                  "the level that matches the warm-up samples (a record that starts mid-way, "
+                  "e.g. a tank half full; needs --warmup; default rest, or the fit's own)")
+      ->check(CLI::IsMember({"rest", "held"}));
   if (with_holdout)
     cmd->add_option("--holdout", o.holdout,
                     "samples never used for fitting: auto (the last quarter of every segment, so "

@@ -15,12 +15,16 @@ namespace hystbench::cli {
 
 struct DataOptions {
   std::string data, columns, delimiter, input_unit, output_unit, holdout = "auto";
-  std::optional<long> warmup;  // --warmup; unset: 0, or a fit's own
+  std::optional<long> warmup;                 // --warmup; unset: 0, or a fit's own
+  std::optional<std::string> initial_state;  // --initial-state rest|held; unset: rest, or a fit's own
   DataSource source() const;
   HoldoutSpec holdout_spec() const;
+  // The warm-up and initial state of `spec`: as given, else those of the
+  // fit (`fit`) when `spec` has none of its own.
+  void take_start(HoldoutSpec& spec, const HoldoutSpec& fit) const;
 };
-// --data (required), --columns, --delimiter, --input-unit, --output-unit, --warmup;
-// --holdout when `with_holdout`.
+// --data (required), --columns, --delimiter, --input-unit, --output-unit,
+// --warmup, --initial-state; --holdout when `with_holdout`.
 void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
 
 // The measurement a fit record is used on: its columns and units unless

@@ -36,7 +36,8 @@ std::string StartupTransient::sentence() const {
          format_number("%.1f", 100 * sample_share) +
          " % of the samples. A model started at rest does not follow the actuator until its states "
          "have caught up; no effect cures that. Fit with --warmup " + std::to_string(warmup) +
-         " (the first excited part's first period), or trim the record.";
+         " (the first excited part's first period), or trim the record; a record that starts "
+         "away from rest (a level held before it) is started there by --initial-state held.";
 }
 
 nlohmann::json StartupTransient::to_json() const {

@@ -90,11 +90,16 @@ Eigen::Index parse_warmup(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-HoldoutSpec HoldoutSpec::parse(const std::string& full, const std::string& where) {
+HoldoutSpec HoldoutSpec::parse(const std::string& given, const std::string& where) {
+  const std::string held = "+held";
+  const bool held_start =
+      given.size() > held.size() && given.compare(given.size() - held.size(), held.size(), held) == 0;
+  const std::string full = held_start ? given.substr(0, given.size() - held.size()) : given;
   const auto plus = full.find("+warmup:");
   const std::string text = full.substr(0, plus);
   HoldoutSpec s = parse_part(text, where);
   if (plus != std::string::npos) s.warmup = parse_warmup(full.substr(plus + 1), where);
+  s.held_start = held_start;
   return s;
 }
 
@@ -144,7 +149,8 @@ HoldoutSpec HoldoutSpec::parse_part(const std::string& text, const std::string& 
 }
 
 std::string HoldoutSpec::text() const {
-  return part_text() + (warmup > 0 ? "+warmup:" + std::to_string(warmup) : "");
+  return part_text() + (warmup > 0 ? "+warmup:" + std::to_string(warmup) : "") +
+         (held_start ? "+held" : "");
 }
 
 std::string HoldoutSpec::part_text() const {
@@ -160,12 +166,17 @@ std::string HoldoutSpec::part_text() const {
 
 namespace {
 
-void apply_warmup(ModelData& d, Eigen::Index warmup) {
+void apply_warmup(ModelData& d, Eigen::Index warmup, bool held_start) {
   if (warmup >= d.size())
     throw InputError("--warmup " + std::to_string(warmup) + ": the record has only " +
                      std::to_string(d.size()) + " samples; the warm-up must leave some to score");
+  if (held_start && warmup == 0)
+    throw InputError(
+        "--initial-state held: the held level is matched to the warm-up samples; give --warmup N "
+        "(N of 1 or more, e.g. 5), or --initial-state rest");
   d.estimation.head(warmup).setZero();
   d.warmup = warmup;
+  d.held_start = held_start;
 }
 
 }  // namespace
@@ -188,7 +199,7 @@ void apply_holdout(ModelData& d, const HoldoutSpec& spec) {
       }
       break;
   }
-  apply_warmup(d, spec.warmup);
+  apply_warmup(d, spec.warmup, spec.held_start);
   if (d.estimation_count() < 2)
     throw InputError("--holdout " + spec.text() + ": leaves fewer than two samples to fit");
 }
@@ -233,9 +244,12 @@ std::string describe_held_part(const ModelData& d, const HoldoutSpec& spec) {
 std::string describe_holdout(const ModelData& d, const HoldoutSpec& spec) {
   const std::string held = describe_held_part(d, spec);
   if (d.warmup == 0) return held;
-  return held + " The first " + std::to_string(d.warmup) +
-         " samples are a warm-up (--warmup): the model runs through them to reach the "
-         "record's state, and no error counts them.";
+  const std::string warm = held + " The first " + std::to_string(d.warmup) +
+                           " samples are a warm-up (--warmup): the model runs through them to "
+                           "reach the record's state, and no error counts them.";
+  if (!d.held_start) return warm;
+  return warm + " The record starts where a long-held input leaves the model, at the level that "
+                "matches the warm-up (--initial-state held).";
 }
 
 }  // namespace hystbench

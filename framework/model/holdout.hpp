@@ -16,9 +16,13 @@ struct HoldoutSpec {
   // Leading samples that only initialise the model (ModelData::warmup).
   // Part of the spec so that a fit's record carries it to every later use.
   Eigen::Index warmup = 0;
+  // The record starts where a held input leaves the model, not at rest
+  // (ModelData::held_start); needs a warm-up.
+  bool held_start = false;
 
   // "auto", "none", "last:0.25", "segments:sine_2Hz,sine_20Hz",
-  // "by-frequency", each optionally followed by "+warmup:N". Throws
+  // "by-frequency", each optionally followed by "+warmup:N" and then
+  // "+held". Throws
   // InputError naming `where` and the accepted forms.
   static HoldoutSpec parse(const std::string& text, const std::string& where = "--holdout");
   std::string text() const;
@@ -44,7 +48,8 @@ struct HoldoutSpec {
 // hold-out. With fewer than four segments it falls back to Auto.
 //
 // Throws InputError when a named segment does not exist, the warm-up is not
-// shorter than the record, or nothing would be left to fit.
+// shorter than the record, a held start has no warm-up, or nothing would be
+// left to fit.
 void apply_holdout(ModelData& data, const HoldoutSpec& spec);
 
 // One sentence for reports: what `spec` held out of `data` and why.

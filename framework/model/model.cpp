@@ -8,6 +8,7 @@
 #include "framework/core/error.hpp"
 #include "framework/core/scratch_pool.hpp"
 #include "framework/core/text.hpp"
+#include "framework/model/held_start.hpp"
 
 namespace hystbench {
 namespace {
@@ -188,6 +189,7 @@ bool Model::simulate(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData
 bool Model::simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                             Eigen::VectorXd& y, Entry entry, const Eigen::VectorXd* added,
                             ChainSignals* signals) const {
+  if (data.held_start && data.warmup > 0) return simulate_held(x, data, y, entry, added, signals);
   const auto add_at = [&](Entry here) {
     if (added && entry == here) y += *added;
   };
@@ -222,6 +224,28 @@ bool Model::simulate_probed(const Eigen::Ref<const Eigen::VectorXd>& x, const Mo
   if (!run_stage(EffectStage::Output)) return false;
   add_at(Entry::Output);
   return y.allFinite();
+}
+
+// simulate_probed() after the input held at the level that matches the
+// warm-up, every signal cut back to the record.
+bool Model::simulate_held(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
+                          Eigen::VectorXd& y, Entry entry, const Eigen::VectorXd* added,
+                          ChainSignals* signals) const {
+  double level = 0.0;
+  if (!held_level(*this, x, data, level)) return false;
+  const ModelData held = with_held_input(data, level, kHeldStartSamples);
+  Eigen::VectorXd added_held;
+  if (added) {
+    added_held.setZero(held.size());
+    added_held.tail(data.size()) = *added;
+  }
+  const bool ok = simulate_probed(x, held, y, entry, added ? &added_held : nullptr, signals);
+  const Eigen::Index n = data.size();
+  y = y.tail(n).eval();
+  if (signals)
+    for (Eigen::VectorXd* s : {&signals->v, &signals->w, &signals->resonance, &signals->x})
+      if (s->size() == held.size()) *s = s->tail(n).eval();
+  return ok;
 }
 
 bool Model::has_lanes() const {

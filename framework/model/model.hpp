@@ -112,6 +112,8 @@ class Model {
 
  private:
   void build(std::vector<std::string> names, const std::string& where);
+  bool simulate_held(const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data, Eigen::VectorXd& y,
+                     Entry entry, const Eigen::VectorXd* added, ChainSignals* signals) const;
 
   std::vector<std::string> names_;
   std::vector<ChainEntry> entries_;

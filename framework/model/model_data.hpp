@@ -37,6 +37,9 @@ struct ModelData {
   // record is (a start-up transient, an unknown initial state): they are
   // simulated but neither fitted nor held out, and no error counts them.
   Eigen::Index warmup = 0;
+  // The record starts where a held input leaves the model (held_start.hpp),
+  // at the level that matches the warm-up; false: at rest. Needs a warm-up.
+  bool held_start = false;
 
   ModelData() = default;
   // Every sample is an estimation sample until a hold-out is applied.

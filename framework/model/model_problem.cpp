@@ -20,8 +20,10 @@ double sse_or_infinite(double sum) {
 
 }  // namespace
 
+// A held start searches its level for each candidate (held_start.hpp), so
+// such candidates run one at a time.
 ModelProblem::ModelProblem(const Model& model, const ModelData& data)
-    : model_(model), data_(data), bounds_(model.bounds()), batched_(model.has_lanes()) {}
+    : model_(model), data_(data), bounds_(model.bounds()), batched_(model.has_lanes() && !data.held_start) {}
 
 double ModelProblem::sse(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   Eigen::VectorXd y;

@@ -9,8 +9,8 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 1.24351399  # current model, estimation RMSE
-current_heldout = 0.6489091048  # current model, held-out RMSE
+current_estimation = 0.5704314417  # current model, estimation RMSE
+current_heldout = 0.4067505329  # current model, held-out RMSE
 sigma = 0.01647651609  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
@@ -28,7 +28,7 @@ set key outside top center vertical maxrows 2
 set grid ytics
 set logscale y
 set ylabel "RMSE [V]"
-set title "RMSE after adding one effect to asymmetry,arx" noenhanced
+set title "RMSE after adding one effect to arx,offset" noenhanced
 plot 'diagnosis_candidates.csv' skip 1 using ($0 - 0.19):2:xtic(1) with boxes lc rgb '#0072B2' title 'estimation', \
      'diagnosis_candidates.csv' skip 1 using ($0 + 0.19):3 with boxes lc rgb '#D55E00' title 'held out', \
      'diagnosis_candidates.csv' skip 1 using ($0 - 0.37):(current_estimation):(bar):(0) with vectors nohead lw 3 lc rgb '#0072B2' title 'current, estimation', \

@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.7019305256:0.7019305256]
+  set yrange [-0.7019140892:0.7019140892]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

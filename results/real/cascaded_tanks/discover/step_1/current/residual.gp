@@ -18,7 +18,7 @@ set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics -2, 2, 6.159415104
+  set ytics -1, 1, 2.491651715
 set object rect from 382, graph 0 to 510, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 894, graph 0 to 1022, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 1406, graph 0 to 1534, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
