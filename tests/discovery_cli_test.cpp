@@ -256,6 +256,8 @@ TEST_F(DiscoveryCli, AHeldStartTravelsWithTheFitAndNeedsAWarmUp) {
   const auto c = run("compare --data " + path("data.csv") + " --fit " + path("h/fit.json") + " --out " + path("hc"));
   ASSERT_EQ(c.code, 0) << c.output;
   EXPECT_EQ(read_json(dir_ / "hc" / "metrics.json")["all"]["n"], 1180);
+  EXPECT_NE(c.output.find("(started where u held at "), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("leaves it: the level that matches the first 20 samples)"), std::string::npos) << c.output;
   const auto rest = run("compare --data " + path("data.csv") + " --fit " + path("h/fit.json") +
                         " --warmup 0 --out " + path("hr"));
   EXPECT_EQ(rest.code, 2);

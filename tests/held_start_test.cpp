@@ -77,6 +77,20 @@ TEST(HeldStart, TheLevelStopsAtTheNearerEndWhenNoneMatches) {
   EXPECT_NEAR(level, d.u.maxCoeff() + 0.5 * (d.u.maxCoeff() - d.u.minCoeff()), 1e-12);
 }
 
+TEST(HeldStart, AConstantRecordIsMatchedAtItsOwnLevel) {
+  // No span to search over: the range is still one unit wide about the input.
+  ModelData d = sine_record();
+  d.u.setConstant(0.7);
+  d.y.setConstant(1.5 * 0.7);
+  apply_holdout(d, HoldoutSpec::parse("none+warmup:3+held"));
+  double level = 0.0;
+  ASSERT_TRUE(held_level(msd(), msd_parameters(), d, level));
+  EXPECT_NEAR(level, 0.7, 1e-9);
+  Eigen::VectorXd y;
+  ASSERT_TRUE(msd().simulate(msd_parameters(), d, y));
+  EXPECT_LT((y - d.y).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 TEST(HeldStart, TheSpecCarriesItAndNeedsAWarmUp) {
   const HoldoutSpec s = HoldoutSpec::parse("auto+warmup:5+held");
   EXPECT_EQ(s.warmup, 5);

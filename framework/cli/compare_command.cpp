@@ -11,8 +11,10 @@
 #include "framework/cli/svr_comparison.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
+#include "framework/core/text.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/io/json_file.hpp"
+#include "framework/model/held_start.hpp"
 #include "framework/svr/svr_model.hpp"
 
 namespace hystbench::cli {
@@ -39,13 +41,24 @@ ModelData data_for(const CompareOptions& o, const FitRecord& fit, DataSource& so
   return data_for_fit(whole, fit, source, true, HoldoutSpec::Mode::None);
 }
 
+// " (started where u held at 2.31 V leaves it, …)": what a held start
+// assumed about the time before the record, so the reader can judge it.
+std::string held_start_text(const FitRecord& fit, const ModelData& data, const DataSource& source) {
+  double level = 0.0;
+  if (!data.held_start || !held_level(fit.model, fit.x, data, level)) return "";
+  return " (started where u held at " + format_number("%.4g", level * data.scales.u) + " " + source.u_unit +
+         " leaves it: the level that matches the first " + std::to_string(data.warmup) + " samples)";
+}
+
 void report(const CompareOptions& o, const DataSource& source, const ModelData& data, Eigen::VectorXd y,
-            const std::string& model_text) {
+            const FitRecord& fit) {
   const auto dir = o.output.prepare("metrics.json");
+  const std::string model_text = fit.model.text();
   write_and_print_comparison(
       dir, source, data, std::move(y), model_text,
       model_text + " on " + o.data.data +
-          (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)" : ""),
+          (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)"
+                         : held_start_text(fit, data, source)),
       o.mat);
 }
 
@@ -63,7 +76,7 @@ void compare(const CompareOptions& o, const CLI::App& cmd) {
   if (!simulate_physical(fit.model, fit.x, data, y, o.periods))
     throw InputError(o.fit + ": the model diverges on " + o.data.data +
                      " (input outside the range it was fitted on?)");
-  report(o, source, data, std::move(y), fit.model.text());
+  report(o, source, data, std::move(y), fit);
 }
 
 }  // namespace

@@ -12,6 +12,9 @@ namespace hystbench::cli {
 Comparison compare_svr_model(const nlohmann::json& file, const std::string& path, const DataOptions& data,
                              const OutputOptions& output, const CLI::App& cmd, const std::string& mat) {
   const SvrHammerstein model = SvrHammerstein::from_json(file, path);
+  if (data.initial_state == "held")
+    throw InputError("--initial-state held: an SVR model starts from the record's first measured "
+                     "samples, not from a held level; leave the option out");
   DataSource source = data.source();
   const Measurement m = source.load();
   const double trained = file.value("sample_time", 0.0);
@@ -23,6 +26,7 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   holdout.mode = HoldoutSpec::Mode::None;
   if (cmd.count("--holdout")) holdout = data.holdout_spec();
   if (data.warmup) holdout.warmup = *data.warmup;
+  holdout.held_start = false;  // "auto+warmup:5+held" given as --holdout
   const ModelData model_data = prepare_model_data(m, SignalScales::of(m), holdout);
   const auto dir = output.prepare("metrics.json");
   return write_and_print_comparison(dir, source, model_data, model.simulate(m.u, m.y), model.describe(),

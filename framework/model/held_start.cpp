@@ -1,13 +1,15 @@
 #include "framework/model/held_start.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "framework/model/model.hpp"
 
 namespace hystbench {
 
 ModelData with_held_input(const ModelData& data, double level, Eigen::Index samples) {
-  const Eigen::Index n = data.size();
+  const Eigen::Index n = data.u.size();
   ModelData e = data;
   e.held_start = false;
   e.warmup = data.warmup + samples;
@@ -54,12 +56,22 @@ bool held_level(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& x, 
   head.held_start = false;
   head.warmup = 0;
   const WarmupMismatch g{model, x, head, head.y.mean()};
-  const double span = data.u.maxCoeff() - data.u.minCoeff();
-  double a = data.u.minCoeff() - 0.5 * span, b = data.u.maxCoeff() + 0.5 * span;
-  double ga = g(a), gb = g(b);
-  if (!std::isfinite(ga) || !std::isfinite(gb)) return false;
-  if (ga * gb > 0) {  // no match inside: the nearer end
-    level = std::abs(ga) < std::abs(gb) ? a : b;
+  const double low = data.u.minCoeff(), high = data.u.maxCoeff();
+  // A constant input still gets a range: u is scaled to unit RMS.
+  const double span = high > low ? high - low : 1.0;
+  // An end where the model diverges (a jump from rest to a level far beyond
+  // the record's range) moves in: to the record's own range, then to its middle.
+  const auto finite_end = [&](std::initializer_list<double> tries, double& at, double& value) {
+    for (double t : tries)
+      if (value = g(t), std::isfinite(value)) return at = t, true;
+    return false;
+  };
+  double a = 0, ga = 0, b = 0, gb = 0;
+  const double middle = 0.5 * (low + high);
+  if (!finite_end({low - 0.5 * span, low, middle}, a, ga) || !finite_end({high + 0.5 * span, high, middle}, b, gb))
+    return false;
+  if (ga == 0.0 || gb == 0.0 || ga * gb > 0) {  // a match at an end, or none inside: the nearer end
+    level = std::abs(ga) <= std::abs(gb) ? a : b;
     return true;
   }
   // Illinois regula falsi: the mismatch is close to linear in the level

@@ -6,7 +6,9 @@
 // model matches the measured warm-up samples (ModelData::warmup). One
 // number per record, found anew for every parameter vector, so a fit and
 // every later record are scored the same way, and the effects need no
-// state-setting code of their own.
+// state-setting code of their own. A term added to the chain by
+// simulate_probed (propose's regressors) is zero before the record and
+// leaves the level where the model without it put it.
 #include "framework/core/eigen.hpp"
 
 #include "framework/model/model_data.hpp"
@@ -25,8 +27,10 @@ ModelData with_held_input(const ModelData& data, double level, Eigen::Index samp
 
 // The held input level (normalised units) at which `model` with parameters
 // `x` matches the mean of the measured warm-up output of `data`, searched
-// over the record's input range widened by half its span; the end nearer
-// to a match when none inside matches. False when the model diverges.
+// over the record's input range widened by half its span (an end where the
+// model diverges moves in to the record's range, then to its middle); the
+// end nearer to a match when none inside matches. False when the model
+// diverges there too.
 bool held_level(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                 double& level);
 
