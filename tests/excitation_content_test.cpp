@@ -127,5 +127,28 @@ TEST(StartupTransient, AnErrorInTheFirstPeriodAfterARestIsNamedWithItsWarmUp) {
   EXPECT_FALSE(find_startup_transient(Eigen::VectorXd::Constant(Eigen::Index(u.size()), 0.01), c).dominates);
 }
 
+TEST(StartupTransient, ARecordThatStartsAtALevelTheModelMissesIsNamedWithTheHeldStart) {
+  std::vector<double> u;
+  sine(u, 0.5, 50.0, 5.0);  // 2.5 periods of 2 000 samples: the periodic rule cannot single out the start
+  const ExcitationContent c = of(u);
+  const Eigen::Index n = Eigen::Index(u.size());
+  // The model starts at 0, the record at 1, and the two meet after 200
+  // samples; the rest fits to 0.05. The first period holds 40 % of the
+  // samples, so only the level at the start names it.
+  Eigen::VectorXd e(n);
+  for (Eigen::Index k = 0; k < n; ++k) e[k] = 0.05 * std::sin(0.37 * double(k)) + std::max(0.0, 1.0 - k / 200.0);
+  const StartupTransient t = find_startup_transient(e, c);
+  EXPECT_FALSE(t.dominates);
+  EXPECT_TRUE(t.starts_away);
+  EXPECT_GT(t.start_ratio, kStartLevelRatio);
+  EXPECT_NE(t.sentence().find("The record starts away from where the model starts"), std::string::npos);
+  EXPECT_NE(t.sentence().find("--warmup N --initial-state held"), std::string::npos) << t.sentence();
+  // An error as large at the start but oscillating about zero is no level.
+  for (Eigen::Index k = 0; k < 50; ++k) e[k] = (k % 2 ? 1.0 : -1.0);
+  EXPECT_FALSE(find_startup_transient(e, c).starts_away);
+  // Nor is one the size of the record's own error.
+  EXPECT_FALSE(find_startup_transient(Eigen::VectorXd::Constant(n, 0.3), c).starts_away);
+}
+
 }  // namespace
 }  // namespace hystbench

@@ -8,6 +8,22 @@
 
 namespace hystbench {
 
+namespace {
+
+// The first hundredth of the record (at least 5 samples): an error there
+// that is mostly its mean, and large against the whole record's, is a start
+// level the model does not share, which a loop or a missing effect is not.
+void mark_start_level(StartupTransient& t, const Eigen::VectorXd& e) {
+  const Eigen::Index k = std::max<Eigen::Index>(5, e.size() / 100);
+  if (e.size() < 4 * k) return;
+  const double rms = std::sqrt(e.squaredNorm() / double(e.size()));
+  const double first = std::sqrt(e.head(k).squaredNorm() / double(k));
+  t.start_ratio = first / rms;
+  t.starts_away = t.start_ratio >= kStartLevelRatio && std::abs(e.head(k).mean()) >= 0.8 * first;
+}
+
+}  // namespace
+
 StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation) {
   StartupTransient t;
   const double total = e.squaredNorm();
@@ -26,10 +42,17 @@ StartupTransient find_startup_transient(const Eigen::VectorXd& e, const Excitati
   t.sample_share = double(samples) / double(e.size());
   t.dominates = t.error_share >= kTransientErrorShare &&
                 t.error_share >= kTransientConcentration * t.sample_share && t.sample_share < 0.5;
+  mark_start_level(t, e);
   return t;
 }
 
 std::string StartupTransient::sentence() const {
+  if (!dominates && starts_away)
+    return "The record starts away from where the model starts: the first samples' error is a "
+           "level " + format_number("%.1f", start_ratio) +
+           " times the RMSE. A record that starts away from rest (a tank half full, an actuator "
+           "held at a voltage) is started there by --warmup N --initial-state held (N: a few "
+           "samples, whose outputs set the level).";
   if (!dominates) return "";
   return "A start-up transient dominates the error: the first period of each excited part holds " +
          format_number("%.0f", 100 * error_share) + " % of the squared error in " +
@@ -45,6 +68,8 @@ nlohmann::json StartupTransient::to_json() const {
           {"error_share", number_or_null(error_share)},
           {"sample_share", number_or_null(sample_share)},
           {"warmup", warmup},
+          {"starts_away", starts_away},
+          {"start_ratio", number_or_null(start_ratio)},
           {"sentence", sentence()}};
 }
 

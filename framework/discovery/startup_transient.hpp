@@ -22,12 +22,21 @@ namespace hystbench {
 inline constexpr double kTransientErrorShare = 0.2;
 inline constexpr double kTransientConcentration = 4.0;
 
+// A record that starts away from where the model starts (a tank half full,
+// an actuator held at a voltage, against a model at rest): the first
+// samples' error is a level at least this many times the RMSE.
+inline constexpr double kStartLevelRatio = 3.0;
+
 struct StartupTransient {
   bool dominates = false;
   double error_share = 0;   // of the squared error, in the first periods
   double sample_share = 0;  // of the samples
   Eigen::Index warmup = 0;  // samples up to the end of the first excited part's first period
-  // Says where it sits and what to do; empty when it does not dominate.
+  // The first samples' error is a level kStartLevelRatio times the RMSE or
+  // more. Advice only: unlike `dominates` it changes no decision.
+  bool starts_away = false;
+  double start_ratio = 0;  // RMS error of the first samples / RMSE
+  // Says where it sits and what to do; empty when neither holds.
   std::string sentence() const;
   nlohmann::json to_json() const;
 };
