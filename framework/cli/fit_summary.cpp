@@ -60,7 +60,7 @@ void print_comparison_headline(const Comparison& metrics, const std::string& uni
               << " samples)\n";
   }
   std::cout << "  " << metrics.excitation.summary() << "\n";
-  if (!metrics.startup.sentence().empty()) std::cout << "  " << metrics.startup.sentence() << "\n";
+  if (metrics.startup.worth_saying()) std::cout << "  " << metrics.startup.sentence() << "\n";
 }
 
 }  // namespace hystbench::cli

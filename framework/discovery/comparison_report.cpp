@@ -329,7 +329,7 @@ std::string comparison_markdown(const ComparisonInput& in, const Comparison& met
                     (in.y_unit.empty() ? std::string() : ", output in " + in.y_unit) +
                     ". All numbers are in metrics.json.\n\n";
   out += headline(in, metrics) + "## What the record excites\n\n" + metrics.excitation.summary() + "\n\n" +
-         (metrics.startup.sentence().empty() ? std::string() : "**" + metrics.startup.sentence() + "**\n\n") +
+         (metrics.startup.worth_saying() ? "**" + metrics.startup.sentence() + "**\n\n" : std::string()) +
          noise_floor(in, metrics) + correlation_verdict(metrics, ts);
   out += "## Where the model fails\n\n" + failure_summary(in, metrics) +
          segment_table(in, metrics) + amplitude_table(in, metrics) + branch_table(in, metrics) +

@@ -139,7 +139,7 @@ std::string where_section(const Diagnosis& d, const std::string& unit,
   out << ".\n\n";
   out << worst_groups(d.where, unit);
   out << "\n" << d.where.excitation.summary() << "\n";
-  if (!d.where.startup.sentence().empty()) out << "- " << d.where.startup.sentence() << "\n";
+  if (d.where.startup.worth_saying()) out << "- " << d.where.startup.sentence() << "\n";
   for (const auto& p : inseparable_pairs(d.model.effects(), d.where.excitation))
     out << "- " << p.sentence(d.where.excitation) << "\n";
   out << "\n";

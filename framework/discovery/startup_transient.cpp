@@ -47,13 +47,13 @@ StartupTransient find_startup_transient(const Eigen::VectorXd& e, const Excitati
 }
 
 std::string StartupTransient::sentence() const {
-  if (!dominates && starts_away)
+  if (!worth_saying()) return "";
+  if (!dominates)
     return "The record starts away from where the model starts: the first samples' error is a "
            "level " + format_number("%.1f", start_ratio) +
            " times the RMSE. A record that starts away from rest (a tank half full, an actuator "
            "held at a voltage) is started there by --warmup N --initial-state held (N: a few "
            "samples, whose outputs set the level).";
-  if (!dominates) return "";
   return "A start-up transient dominates the error: the first period of each excited part holds " +
          format_number("%.0f", 100 * error_share) + " % of the squared error in " +
          format_number("%.1f", 100 * sample_share) +

@@ -36,6 +36,8 @@ struct StartupTransient {
   // more. Advice only: unlike `dominates` it changes no decision.
   bool starts_away = false;
   double start_ratio = 0;  // RMS error of the first samples / RMSE
+  // Whether there is anything to tell the user (sentence() is not empty).
+  bool worth_saying() const { return dominates || starts_away; }
   // Says where it sits and what to do; empty when neither holds.
   std::string sentence() const;
   nlohmann::json to_json() const;

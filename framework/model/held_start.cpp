@@ -52,9 +52,8 @@ struct WarmupMismatch {
 
 bool held_level(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& x, const ModelData& data,
                 double& level) {
-  ModelData head = data.head(std::max<Eigen::Index>(data.warmup, 1));
-  head.held_start = false;
-  head.warmup = 0;
+  // with_held_input starts its copy at rest: no recursion into held_level.
+  const ModelData head = data.head(std::max<Eigen::Index>(data.warmup, 1));
   const WarmupMismatch g{model, x, head, head.y.mean()};
   const double low = data.u.minCoeff(), high = data.u.maxCoeff();
   // A constant input still gets a range: u is scaled to unit RMS.
@@ -62,8 +61,13 @@ bool held_level(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& x, 
   // An end where the model diverges (a jump from rest to a level far beyond
   // the record's range) moves in: to the record's own range, then to its middle.
   const auto finite_end = [&](std::initializer_list<double> tries, double& at, double& value) {
-    for (double t : tries)
-      if (value = g(t), std::isfinite(value)) return at = t, true;
+    for (double t : tries) {
+      value = g(t);
+      if (std::isfinite(value)) {
+        at = t;
+        return true;
+      }
+    }
     return false;
   };
   double a = 0, ga = 0, b = 0, gb = 0;
