@@ -53,11 +53,12 @@ TEST(EffectLanes, ChunkBoundariesDoNotChangeAValue) {
     expect_bit_identical("hysteresis,asymmetry,msd,arx,creep,offset,drift", samples);
 }
 
-// The Bouc-Wen oscillator runs a block over the whole record: lanes with one
-// sub-step count together (a kinked sub-step redone per lane), lanes whose
+// The Bouc-Wen and Duffing oscillators run a block over the whole record:
+// lanes with one sub-step count together (a kinked sub-step redone per lane), lanes whose
 // stiffness asks for more sub-steps each alone; under every input hold.
 TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
-  for (const char* effects : {"feedback_hysteresis", "hysteresis,asymmetry,feedback_hysteresis,arx"})
+  for (const char* effects : {"feedback_hysteresis", "hysteresis,asymmetry,feedback_hysteresis,arx", "duffing",
+                              "asymmetry,duffing,offset"})
     for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh})
       expect_bit_identical(effects, 600, hold);
   expect_bit_identical("feedback_hysteresis", 600, InputHold::Spline, 3);

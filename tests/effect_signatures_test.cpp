@@ -219,6 +219,17 @@ TEST(EffectSignatures, FeedbackHysteresisFindsALoopDrivenByTheOutput) {
   EXPECT_LT(std::abs(statistic("hysteresis", r).value), 0.5);
 }
 
+TEST(EffectSignatures, DuffingFindsAPolynomialSpringBeyondTheLinearPart) {
+  // A residual of ŷ³ (a missing hardening) plus a share of ŷ itself (a gain
+  // error), which the statistic leaves to the linear part.
+  const Eigen::VectorXd u = sine(5), y_model = sine(5) + 0.3 * sine(13);
+  const Eigen::VectorXd cube = y_model.array().cube().matrix();
+  const Record r(u, y_model, 0.2 * cube + 0.5 * y_model + gaussian(0.01, 8));
+  EXPECT_GT(statistic("duffing", r).value, 0.5);
+  const Record linear(u, y_model, 0.5 * y_model + gaussian(0.01, 9));
+  EXPECT_LT(statistic("duffing", linear).value, 4 / std::sqrt(double(kN)));
+}
+
 // ---- the framework's side ---------------------------------------------------------
 
 TEST(EffectSignatures, AWhiteResidualShowsNoSignOfAnyEffect) {
@@ -226,7 +237,7 @@ TEST(EffectSignatures, AWhiteResidualShowsNoSignOfAnyEffect) {
   const Record r(u, u, gaussian(1.0, 6));
   const double chance = 4 / std::sqrt(double(kN));  // 4σ of a correlation
   for (const char* effect : {"offset", "drift", "asymmetry", "backlash", "hysteresis", "creep",
-                             "delay", "feedback_hysteresis"})
+                             "delay", "feedback_hysteresis", "duffing"})
     EXPECT_LT(std::abs(statistic(effect, r).value), chance) << effect;
   EXPECT_LT(std::abs(statistic("msd", r).value), 1.5 * chance);  // the best of 144
   EXPECT_LT(statistic("arx", r).value, 20.0 / double(kN));       // partial R²: χ²(3) / N

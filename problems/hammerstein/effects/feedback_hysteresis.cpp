@@ -21,54 +21,19 @@
 // the effect passes its input through exactly, which makes it neutral
 // (period 0, alpha 0) when added to a model without msd.
 //
-// Integration: classical RK4 with `substeps` steps per sample (by default as
-// many as keep the fastest linear mode within kStepAngle per step, at most
-// 20; raised when the oscillator is too stiff for the step, up to 2000, or
-// up to ten times a fixed count, beyond which the parameters fail), the
-// input reconstructed between samples by the model's input hold
-// (input_hold.hpp): by default a not-a-knot cubic spline through the record,
-// the most accurate offline; linear or zero-order hold in a stream, where
-// output k may depend on inputs up to k only. A step in which the velocity
-// or z changes sign is split at the crossing, where |y'| and |z| have their
-// kinks. The state starts at rest (y = y' = z = 0) and output 0 is 0; output
-// k + 1 is the state after the interval from sample k to k + 1.
-#include <algorithm>
-#include <array>
+// The oscillator and its integration are shared with duffing
+// (oscillator.hpp); this file is the Bouc-Wen law.
 #include <cmath>
-#include <limits>
-#include <numbers>
-#include <vector>
+#include <optional>
+#include <span>
+#include <string>
 
-#include "framework/core/scratch_pool.hpp"
 #include "framework/core/text.hpp"
-#include "framework/model/effect.hpp"
 #include "framework/model/regressors.hpp"
-#include "framework/model/input_hold.hpp"
-#include "framework/model/input_interpolation.hpp"
+#include "problems/hammerstein/effects/oscillator.hpp"
 
 namespace hystbench {
 namespace {
-
-// By default a sub-step turns the fastest linear mode by at most kStepAngle
-// radians. RK4's largest error, against 200 sub-steps, is then 5e-6 of the
-// output's RMS on the hidden-effect oscillator (4 sub-steps) and 5e-5 with a
-// strong loop, whose z moves faster than the linear modes (3 sub-steps,
-// tests/feedback_hysteresis_test.cpp): below the noise of the quietest
-// record we know, Silverbox's 5e-4. More than kDefaultSubsteps are only
-// taken when the oscillator is stiff (more than 1 rad per step).
-constexpr double kStepAngle = 0.1;
-constexpr int kDefaultSubsteps = 20;
-constexpr int kMaxSubsteps = 2000;
-// A fixed count (--substeps, or the coarse problem a global search runs on)
-// is a request for speed: a stiff oscillator is raised to at most
-// kFixedRaise times it and refused beyond. A global search's population
-// strays into oscillators far stiffer than the record resolves, and raising
-// them towards kMaxSubsteps made one Silverbox restart eight times slower
-// than its siblings (docs/discovery.md, "Measured benchmarks").
-constexpr int kFixedRaise = 10;
-// A state beyond this (normalised units: the measured output has RMS 1) has
-// diverged.
-constexpr double kDivergence = 1e6;
 
 // Signature statistic: corr(e, ŷ − play_r(ŷ)), the stop operator of the model
 // output at the width r (1/16 .. 1/2 of its half range) where it is largest.
@@ -104,8 +69,7 @@ std::string loop_reading(std::span<const double> p) {
          (bd < 0.0 ? "hardening" : "softening") + " spring, not hysteresis";
 }
 
-class FeedbackHysteresis : public Effect {
- public:
+struct BoucWen {
   static EffectInfo info() {
     EffectInfo i;
     i.name = "feedback_hysteresis";
@@ -138,402 +102,28 @@ class FeedbackHysteresis : public Effect {
     return i;
   }
 
-  bool apply(std::span<const double> p, const SignalContext& ctx,
-             Eigen::Ref<Eigen::VectorXd> signal) const override {
-    Coefficients c;
-    const EffectSetup s = setup(p, ctx.sample_time, ctx.substeps, c);
-    if (s != EffectSetup::Run) return s == EffectSetup::PassThrough;
-    if (signal.size() == 0) return true;
-    return run_record(c, ctx.hold, signal);
+
+  // p = (alpha, beta_gamma, beta_delta).
+  static std::optional<OscillatorLaw> coefficients(std::span<const double> p) {
+    const double a = p[0], bg = p[1], bd = p[2];
+    if (!std::isfinite(a) || !std::isfinite(bg) || !std::isfinite(bd) || a <= -1.0) return std::nullopt;
+    return OscillatorLaw{{a, bg, bd}, 1.0 + std::max(a, 0.0), a != 0.0};
   }
 
-  bool has_lanes() const override { return true; }
-  std::unique_ptr<LaneRun> lane_run(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) const override {
-    return std::make_unique<Block>(p, ctx, ok);
-  }
-
-  std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
-    Coefficients c;
-    if (!is_causal(ctx.hold)) return nullptr;  // the spline needs the whole record
-    return stepper_for(setup(p, ctx.sample_time, ctx.substeps, c), [&] {
-      return kernel_stepper<Stream>(
-          [c, hold = ctx.hold](Stream& st, double w, double) { return sample(c, hold, st, w); });
-    });
-  }
-
- private:
-  // The oscillator in time units of samples, for one candidate (V = double)
-  // or a block of candidates (V = LaneVector).
+  // Restoring force y + z.
   template <class V>
-  struct Rates {
-    V w2, c1;     // ω² and 2ζω, ω = ωn·Ts rad per sample
-    V a, bg, bd;  // z' = a y' − bg |y'| z − bd y' |z|
-  };
+  static V excess(const OscillatorRates<V>&, V w, V y, V z) {
+    return w - y - z;
+  }
 
-  // One candidate's oscillator and its integration steps.
-  struct Coefficients {
-    Rates<double> r;
-    int sub;          // RK4 steps per sample
-    double h;         // their length, 1/sub
-    bool hysteretic;  // a != 0
-  };
-
-  // State (y, v = dy/dsample, z).
+  // z' = a y' − bg |y'| z − bd y' |z|.
   template <class V>
-  struct StateOf {
-    V y{}, v{}, z{};
-  };
-  using State = StateOf<double>;
-
-  static EffectSetup setup(std::span<const double> p, double ts, int substeps, Coefficients& c) {
-    const double period = p[0], zeta = p[1], a = p[2], bg = p[3], bd = p[4];
-    if (period == 0.0) return EffectSetup::PassThrough;
-    const double fn = 1.0 / period;
-    if (!(period > 0.0) || !std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !std::isfinite(a) ||
-        !std::isfinite(bg) || !std::isfinite(bd) || !(ts > 0.0) || a <= -1.0)
-      return EffectSetup::Invalid;
-    // Time in samples: w_s = wn * Ts rad per sample. z' is rate-independent,
-    // so its coefficients do not change with the time unit.
-    const double ws = 2.0 * std::numbers::pi * fn * ts;
-    // Largest eigenvalue modulus of the linearised system, bounded by
-    // ws_eff (zeta + sqrt(zeta^2 + 1)); keep |lambda| h <= 1.
-    const double stiff =
-        ws * std::sqrt(1.0 + std::max(a, 0.0)) * (zeta + std::sqrt(zeta * zeta + 1.0));
-    int sub = substeps > 0 ? substeps : std::clamp(int(std::ceil(stiff / kStepAngle)), 1, kDefaultSubsteps);
-    if (stiff > double(sub)) {
-      const int most = substeps > 0 ? std::min(kMaxSubsteps, kFixedRaise * substeps) : kMaxSubsteps;
-      if (!(stiff <= double(most))) return EffectSetup::Invalid;
-      sub = static_cast<int>(std::ceil(stiff));
-    }
-    c = {{ws * ws, 2.0 * zeta * ws, a, bg, bd}, sub, 1.0 / sub, a != 0.0};
-    return EffectSetup::Run;
-  }
-
-  // The one-candidate and the block forms run these same operations, so
-  // each lane of a block is bit for bit its candidate.
-  template <class V>
-  static V zdot(const Rates<V>& c, V v, V z) {
-    return c.a * v - c.bg * lane_abs(v) * z - c.bd * v * lane_abs(z);
-  }
-
-  // One RK4 step of length `step` with the input at its start, middle and end.
-  template <class V>
-  static StateOf<V> rk4(const Rates<V>& c, const StateOf<V>& s, V wa, V wm, V wb, double step) {
-    const V w2 = c.w2, c1 = c.c1;
-    const double half = 0.5 * step, sixth = step / 6.0;
-    const V k1y = s.v, k1v = w2 * (wa - s.y - s.z) - c1 * s.v, k1z = zdot(c, s.v, s.z);
-    const V y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
-    const V k2y = v2, k2v = w2 * (wm - y2 - z2) - c1 * v2, k2z = zdot(c, v2, z2);
-    const V y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
-    const V k3y = v3, k3v = w2 * (wm - y3 - z3) - c1 * v3, k3z = zdot(c, v3, z3);
-    const V y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
-    const V k4y = v4, k4v = w2 * (wb - y4 - z4) - c1 * v4, k4z = zdot(c, v4, z4);
-    return StateOf<V>{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
-                      s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
-                      s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
-  }
-
-  // |v| and |z| have kinks where v or z changes sign (velocity reversals,
-  // zero crossings of the hysteretic force); RK4 loses its order over a
-  // step containing one (error O(h^2) per event).
-  static bool has_kink(const Coefficients& c, const State& x, const State& next) {
-    return c.hysteretic && (x.v * next.v < 0.0 || x.z * next.z < 0.0);
-  }
-
-  // Sub-step i from x again, split at the crossing (located by linear
-  // interpolation between x and the unsplit step's end, next).
-  template <class InputAt>
-  static State split_step(const Coefficients& c, const State& x, const State& next, int i, double w_start,
-                          double w_end, InputAt w_at) {
-    double theta = 1.0;
-    if (x.v * next.v < 0.0) theta = std::min(theta, x.v / (x.v - next.v));
-    if (x.z * next.z < 0.0) theta = std::min(theta, x.z / (x.z - next.z));
-    theta = std::clamp(theta, 1e-3, 1.0 - 1e-3);
-    auto at = [&](double frac) { return w_at((double(i) + frac) * c.h); };  // frac of this sub-step
-    const State mid = rk4(c.r, x, w_start, at(0.5 * theta), at(theta), theta * c.h);
-    return rk4(c.r, mid, at(theta), at(0.5 * (1.0 + theta)), w_end, (1.0 - theta) * c.h);
-  }
-
-  // Advances x over one sample interval, shared by the batch and streaming
-  // forms under every hold: wv[j] is the input at fraction j/(2 sub) of the
-  // interval (j = 0 .. 2 sub), w_at(s) the input at any fraction s.
-  template <class InputAt>
-  static void advance(const Coefficients& c, State& x, const double* wv, InputAt w_at) {
-    for (int i = 0; i < c.sub; ++i) {
-      State next = rk4(c.r, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], c.h);
-      if (has_kink(c, x, next)) next = split_step(c, x, next, i, wv[2 * i], wv[2 * i + 2], w_at);
-      x = next;
-    }
-  }
-
-  // Also true for NaN.
-  static bool diverged(const State& x) {
-    return !(std::abs(x.y) < kDivergence && std::abs(x.z) < kDivergence && std::abs(x.v) < kDivergence);
-  }
-
-  // The input on the interval from w0 to w1 under a causal hold, at the
-  // fractions advance() reads.
-  static void fill_held(const Coefficients& c, InputHold hold, double w0, double w1, std::vector<double>& wv) {
-    wv.resize(2 * c.sub + 1);
-    for (int j = 0; j <= 2 * c.sub; ++j) wv[j] = held_value(hold, w0, w1, double(j) / double(2 * c.sub));
-  }
-
-  // One candidate's whole record, in place; false when it diverged.
-  static bool run_record(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
-    return hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, hold, signal);
-  }
-
-  // Batch form with the spline through the whole record (not causal).
-  static bool run_spline(const Coefficients& c, Eigen::Ref<Eigen::VectorXd> signal) {
-    const int sub = c.sub;
-    thread_local UniformCubicSpline spline;
-    thread_local std::vector<UniformCubicSpline::Weights> weights;
-    thread_local std::vector<double> wv;
-    thread_local int weights_for = 0;
-    spline.fit(signal);
-    if (weights_for != sub) {
-      weights.resize(2 * sub + 1);
-      for (int j = 0; j <= 2 * sub; ++j)
-        weights[j] = UniformCubicSpline::weights(double(j) / double(2 * sub));
-      weights_for = sub;
-    }
-    wv.resize(2 * sub + 1);
-    State x;
-    signal[0] = 0.0;
-    for (Eigen::Index k = 0; k + 1 < signal.size(); ++k) {
-      for (int j = 0; j <= 2 * sub; ++j) wv[j] = spline.value(k, weights[j]);
-      advance(c, x, wv.data(), [&](double s) { return spline.value(k, UniformCubicSpline::weights(s)); });
-      if (diverged(x)) return false;
-      signal[k + 1] = x.y;
-    }
-    return true;
-  }
-
-  // Batch form under a causal hold: the interval from sample k to k + 1 sees
-  // those two samples only, exactly as the stream does.
-  static bool run_held(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
-    thread_local std::vector<double> wv;
-    State x;
-    double w0 = signal[0];
-    signal[0] = 0.0;
-    for (Eigen::Index k = 0; k + 1 < signal.size(); ++k) {
-      const double w1 = signal[k + 1];
-      fill_held(c, hold, w0, w1, wv);
-      advance(c, x, wv.data(), [&](double s) { return held_value(hold, w0, w1, s); });
-      if (diverged(x)) return false;
-      signal[k + 1] = x.y;
-      w0 = w1;
-    }
-    return true;
-  }
-
-  // A block of candidates, run over the whole record at once (the spline
-  // hold needs every sample before the first step). Lanes that share a
-  // sub-step count advance together, one group after another, and a lane
-  // whose sub-step has a kink redoes it alone with split_step(); a lane
-  // whose count no other lane has runs the one-candidate form. Either way
-  // every lane is bit for bit what apply() gives its candidate.
-  class Block final : public LaneRun {
-   public:
-    Block(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) : hold_(ctx.hold) {
-      for (int l = 0; l < kEffectLanes; ++l) {
-        const EffectSetup s = setup(p[l], ctx.sample_time, ctx.substeps, c_[l]);
-        if (s == EffectSetup::Invalid) ok[l] = false;
-        running_[l] = s == EffectSetup::Run;
-      }
-    }
-
-    void run(std::span<LaneVector> signal, [[maybe_unused]] const LaneChunk& chunk) override {
-      eigen_assert(chunk.begin == 0 && "whole_record(): the record comes in one chunk");
-      const std::array<LaneMask, kEffectLanes> groups = sub_step_groups();
-      bool input_read = false;  // every group reads the block's input, not an earlier group's output
-      for (int l = 0; l < kEffectLanes; ++l) {
-        const int members = int(std::count(groups[l].begin(), groups[l].end(), true));
-        if (members == 1) run_alone(l, signal);
-        if (members < 2) continue;
-        if (!input_read) read_input(signal), input_read = true;
-        group_ = groups[l], sub_ = c_[l].sub;
-        run_together(signal);
-      }
-    }
-
-    void finish(LaneMask& ok) const override {
-      for (int l = 0; l < kEffectLanes; ++l)
-        if (failed_[l]) ok[l] = false;
-    }
-    bool reads_stage_input() const override { return false; }
-    bool whole_record() const override { return true; }
-
-   private:
-    // Lane l through apply()'s own code.
-    void run_alone(int l, std::span<LaneVector> signal) {
-      Eigen::VectorXd x(Eigen::Index(signal.size()));
-      for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = signal[std::size_t(k)][l];
-      failed_[l] = !run_record(c_[l], hold_, x);
-      for (Eigen::Index k = 0; k < x.size(); ++k) signal[std::size_t(k)][l] = x[k];
-    }
-
-    // groups[l]: the running lanes with lane l's sub-step count, for the
-    // first lane of each count; empty for the others.
-    std::array<LaneMask, kEffectLanes> sub_step_groups() const {
-      std::array<LaneMask, kEffectLanes> groups{};
-      LaneMask placed{};
-      for (int l = 0; l < kEffectLanes; ++l) {
-        if (!running_[l] || placed[l]) continue;
-        for (int m = l; m < kEffectLanes; ++m)
-          if (running_[m] && c_[m].sub == c_[l].sub) groups[l][m] = placed[m] = true;
-      }
-      return groups;
-    }
-
-    void read_input(std::span<const LaneVector> signal);
-    void run_together(std::span<LaneVector> signal);
-    double spline_value(std::span<const LaneVector> input, Eigen::Index k, int l, double s) const;
-    void fill_inputs(std::span<const LaneVector> input, Eigen::Index k, std::vector<LaneVector>& wv) const;
-    void redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i, Eigen::Index k,
-                    const std::vector<LaneVector>& wv, std::span<const LaneVector> input) const;
-    bool check_divergence(const StateOf<LaneVector>& x);
-
-    // Record-long buffers, reused from one block to the next: a fit runs
-    // thousands of blocks, and fresh megabyte buffers for each cost about
-    // as much in page faults as the coarse integration itself. A block
-    // fills them before it reads them.
-    struct Scratch {
-      std::vector<LaneVector> input;
-      std::vector<LaneVector> second;  // the splines' second derivatives
-      std::vector<double> super;       // the spline solve's scratch
-      std::vector<UniformCubicSpline::Weights> weights;
-    };
-    static ScratchPool<Scratch>& scratch() {
-      static ScratchPool<Scratch> pool;
-      return pool;
-    }
-
-    InputHold hold_;
-    std::array<Coefficients, kEffectLanes> c_{};
-    LaneMask running_{}, failed_{};
-    LaneMask group_{};  // the lanes run_together() advances, and their
-    int sub_ = 0;       // sub-step count
-    ScratchPool<Scratch>::Lease lease_ = scratch().lend();
-    Scratch& s_ = *lease_;
-  };
-
-  // The streaming form's state: the oscillator and the previous input.
-  struct Stream {
-    State x;
-    double w_prev = 0.0;
-    bool started = false;
-    std::vector<double> wv;
-  };
-
-  // Sample k of the stream: integrates the interval from k − 1 to k.
-  static double sample(const Coefficients& c, InputHold hold, Stream& st, double w) {
-    if (!st.started) {  // output 0 is the state at rest
-      st.started = true;
-      st.w_prev = w;
-      return 0.0;
-    }
-    const double w0 = st.w_prev;
-    fill_held(c, hold, w0, w, st.wv);
-    advance(c, st.x, st.wv.data(), [&](double s) { return held_value(hold, w0, w, s); });
-    st.w_prev = w;
-    return diverged(st.x) ? std::numeric_limits<double>::quiet_NaN() : st.x.y;
+  static V zdot(const OscillatorRates<V>& c, V, V v, V z) {
+    return c.p0 * v - c.p1 * lane_abs(v) * z - c.p2 * v * lane_abs(z);
   }
 };
-
-// The block's input, and under the spline hold every lane's spline.
-void FeedbackHysteresis::Block::read_input(std::span<const LaneVector> signal) {
-  s_.input.assign(signal.begin(), signal.end());
-  if (hold_ != InputHold::Spline) return;
-  s_.second.resize(s_.input.size());
-  spline_second_derivatives<LaneVector>(s_.input, s_.second, s_.super);
-}
-
-// The lanes of group_ over the whole record, from read_input()'s input.
-void FeedbackHysteresis::Block::run_together(std::span<LaneVector> signal) {
-  const std::span<const LaneVector> input(s_.input);
-  s_.weights.resize(std::size_t(2 * sub_ + 1));
-  for (int j = 0; j <= 2 * sub_; ++j)
-    s_.weights[std::size_t(j)] = UniformCubicSpline::weights(double(j) / double(2 * sub_));
-  Rates<LaneVector> r{};
-  LaneBits keep{};  // lanes outside the group keep their signal
-  for (int l = 0; l < kEffectLanes; ++l) {
-    keep[l] = group_[l] ? 0 : -1;
-    if (!group_[l]) continue;
-    r.w2[l] = c_[l].r.w2, r.c1[l] = c_[l].r.c1, r.a[l] = c_[l].r.a, r.bg[l] = c_[l].r.bg, r.bd[l] = c_[l].r.bd;
-  }
-  const double h = 1.0 / sub_;
-  std::vector<LaneVector> wv(std::size_t(2 * sub_ + 1));
-  StateOf<LaneVector> x{};
-  signal[0] = keep ? signal[0] : LaneVector{};
-  for (Eigen::Index k = 0; k + 1 < Eigen::Index(signal.size()); ++k) {
-    fill_inputs(input, k, wv);
-    for (int i = 0; i < sub_; ++i) {
-      StateOf<LaneVector> next = rk4(r, x, wv[2 * i], wv[2 * i + 1], wv[2 * i + 2], h);
-      redo_kinks(x, next, i, k, wv, input);
-      x = next;
-    }
-    if (!check_divergence(x)) return;
-    signal[std::size_t(k + 1)] = keep ? signal[std::size_t(k + 1)] : x.y;
-  }
-}
-
-// Lane l's spline at position k + s, as UniformCubicSpline::value computes it.
-double FeedbackHysteresis::Block::spline_value(std::span<const LaneVector> input, Eigen::Index k, int l,
-                                               double s) const {
-  const auto last = Eigen::Index(input.size()) - 1;
-  if (k >= last) return input[std::size_t(last)][l];
-  const auto i = std::size_t(k);
-  return UniformCubicSpline::blend(UniformCubicSpline::weights(s), input[i][l], input[i + 1][l],
-                                   s_.second[i][l], s_.second[i + 1][l]);
-}
-
-// The input of every lane at the fractions advance() reads, computed as
-// UniformCubicSpline::value and held_value compute them.
-void FeedbackHysteresis::Block::fill_inputs(std::span<const LaneVector> input, Eigen::Index k,
-                                            std::vector<LaneVector>& wv) const {
-  const LaneVector w0 = input[std::size_t(k)], w1 = input[std::size_t(k + 1)];
-  for (int j = 0; j <= 2 * sub_; ++j) {
-    if (hold_ == InputHold::Spline) {
-      wv[std::size_t(j)] = UniformCubicSpline::blend(s_.weights[std::size_t(j)], w0, w1, s_.second[std::size_t(k)],
-                                                     s_.second[std::size_t(k + 1)]);
-    } else {
-      wv[std::size_t(j)] = hold_ == InputHold::Zoh ? w0 : w0 + double(j) / double(2 * sub_) * (w1 - w0);
-    }
-  }
-}
-
-void FeedbackHysteresis::Block::redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i,
-                                           Eigen::Index k, const std::vector<LaneVector>& wv,
-                                           std::span<const LaneVector> input) const {
-  const LaneBits crossing = (x.v * next.v < 0.0) | (x.z * next.z < 0.0);
-  for (int l = 0; l < kEffectLanes; ++l) {
-    if (!crossing[l] || !group_[l] || failed_[l]) continue;
-    const State from{x.y[l], x.v[l], x.z[l]}, to{next.y[l], next.v[l], next.z[l]};
-    if (!has_kink(c_[l], from, to)) continue;
-    const auto w_at = [&](double s) {
-      if (hold_ == InputHold::Spline) return spline_value(input, k, l, s);
-      return held_value(hold_, input[std::size_t(k)][l], input[std::size_t(k + 1)][l], s);
-    };
-    const double w_start = wv[std::size_t(2 * i)][l], w_end = wv[std::size_t(2 * i + 2)][l];
-    const State redone = split_step(c_[l], from, to, i, w_start, w_end, w_at);
-    next.y[l] = redone.y, next.v[l] = redone.v, next.z[l] = redone.z;
-  }
-}
-
-// Marks the group's lanes that diverged in this sample, as apply() stops
-// there; false once every lane of the group has.
-bool FeedbackHysteresis::Block::check_divergence(const StateOf<LaneVector>& x) {
-  bool any_left = false;
-  for (int l = 0; l < kEffectLanes; ++l) {
-    if (!group_[l] || failed_[l]) continue;
-    failed_[l] = diverged(State{x.y[l], x.v[l], x.z[l]});
-    any_left = any_left || !failed_[l];
-  }
-  return any_left;
-}
 
 }  // namespace
 }  // namespace hystbench
 
-HYSTBENCH_EFFECT(hystbench::FeedbackHysteresis)
+HYSTBENCH_EFFECT(hystbench::Oscillator<hystbench::BoucWen>)
