@@ -116,7 +116,6 @@ class Oscillator : public Effect {
   // diverged.
   static constexpr double kDivergence = 1e6;
 
-
   template <class V>
   using Rates = OscillatorRates<V>;
 
@@ -159,9 +158,9 @@ class Oscillator : public Effect {
     return EffectSetup::Run;
   }
 
-  // The one-candidate and the block forms run these same operations, so
-  // each lane of a block is bit for bit its candidate.
-  // One RK4 step of length `step` with the input at its start, middle and end.
+  // One RK4 step of length `step` with the input at its start, middle and
+  // end. The one-candidate and the block forms run these same operations,
+  // so each lane of a block is bit for bit its candidate.
   template <class V>
   static StateOf<V> rk4(const Rates<V>& c, const StateOf<V>& s, V wa, V wm, V wb, double step) {
     const V w2 = c.w2, c1 = c.c1;
