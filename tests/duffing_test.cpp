@@ -9,6 +9,7 @@
 #include "framework/discovery/model_fit.hpp"
 #include "framework/discovery/model_synthetic_data.hpp"
 #include "framework/model/model.hpp"
+#include "tests/input_record.hpp"
 
 namespace hystbench {
 namespace {
@@ -18,16 +19,6 @@ Eigen::VectorXd params(double fn, double zeta, double k2, double k3, double gain
   Eigen::VectorXd x(5);
   x << gain, 1.0 / fn, zeta, k2, k3;
   return x;
-}
-
-ModelData data_for(const Eigen::VectorXd& u, double ts) {
-  ModelData d;
-  d.sample_time = ts;
-  d.t = Eigen::VectorXd::LinSpaced(u.size(), 0.0, ts * double(u.size() - 1));
-  d.u = u;
-  d.y = Eigen::VectorXd::Zero(u.size());
-  d.estimation = Eigen::VectorXd::Ones(u.size());
-  return d;
 }
 
 Eigen::VectorXd multisine(Eigen::Index n, double ts) {
@@ -49,7 +40,7 @@ TEST(Duffing, DeclaresMsdParameterNamesAndExtendsMsd) {
   EXPECT_TRUE(m.bounds().contains(m.neutral()));
   Eigen::VectorXd y;
   const Eigen::VectorXd u = multisine(500, 1e-3);
-  ASSERT_TRUE(m.simulate(m.neutral(), data_for(u, 1e-3), y));
+  ASSERT_TRUE(m.simulate(m.neutral(), input_record(u, 1e-3), y));
   EXPECT_EQ(y, u) << "period 0 passes the input through";
 }
 
@@ -64,7 +55,7 @@ TEST(Duffing, AConstantDriveSettlesOnTheSpringsStaticCurve) {
                        Case{0.0, -0.1, 0.9, 1.0},          // softening: y − y³/10 = 0.9
                        Case{-0.2, 0.3, 2.0625, 1.5}}) {    // 1.5 − 0.45 + 1.0125
     const double ts = 1e-3;
-    const ModelData d = data_for(Eigen::VectorXd::Constant(3000, c.w), ts);
+    const ModelData d = input_record(Eigen::VectorXd::Constant(3000, c.w), ts);
     Eigen::VectorXd y;
     ASSERT_TRUE(model().simulate(params(7.0, 0.9, c.k2, c.k3), d, y));
     EXPECT_NEAR(y[y.size() - 1], c.y, 1e-9) << "k2 " << c.k2 << ", k3 " << c.k3;
@@ -75,7 +66,7 @@ TEST(Duffing, AConstantDriveSettlesOnTheSpringsStaticCurve) {
 // hysteresis, bit for bit: the same integration runs both.
 TEST(Duffing, WithALinearSpringItIsTheFeedbackOscillatorWithoutALoop) {
   const double ts = 1.0 / 750.0;
-  const ModelData d = data_for(multisine(3000, ts), ts);
+  const ModelData d = input_record(multisine(3000, ts), ts);
   Eigen::VectorXd bouc_wen(6);
   bouc_wen << 1.5, 1.0 / 25.0, 0.05, 0.0, 0.0, 0.0;
   Eigen::VectorXd y_duffing, y_bouc_wen;
@@ -89,7 +80,7 @@ TEST(Duffing, WithALinearSpringItIsTheFeedbackOscillatorWithoutALoop) {
 
 TEST(Duffing, ASofteningSpringThatEscapesFails) {
   const double ts = 1e-3;
-  const ModelData d = data_for(Eigen::VectorXd::Constant(2000, 2.0), ts);
+  const ModelData d = input_record(Eigen::VectorXd::Constant(2000, 2.0), ts);
   Eigen::VectorXd y;
   // y − y³ peaks at 0.385: a drive of 2 pushes the mass over the barrier.
   EXPECT_FALSE(model().simulate(params(7.0, 0.5, 0.0, -1.0), d, y));

@@ -7,6 +7,7 @@
 
 #include "framework/model/input_interpolation.hpp"
 #include "framework/model/model.hpp"
+#include "tests/input_record.hpp"
 
 namespace hystbench {
 namespace {
@@ -17,16 +18,6 @@ Eigen::VectorXd params(double fn, double zeta, double alpha, double bg, double b
   Eigen::VectorXd x(6);
   x << gain, 1.0 / fn, zeta, alpha, bg, bd;
   return x;
-}
-
-ModelData data_for(const Eigen::VectorXd& u, double ts) {
-  ModelData d;
-  d.sample_time = ts;
-  d.t = Eigen::VectorXd::LinSpaced(u.size(), 0.0, ts * double(u.size() - 1));
-  d.u = u;
-  d.y = Eigen::VectorXd::Zero(u.size());
-  d.estimation = Eigen::VectorXd::Ones(u.size());
-  return d;
 }
 
 // A random-phase-like multisine with RMS about 1, 5-150 Hz at fs = 1 kHz.
@@ -73,7 +64,7 @@ TEST(FeedbackHysteresis, StepResponseAtZeroAlphaMatchesAnalyticSecondOrder) {
   const double ts = 1e-3;
   const Eigen::Index n = 3000;
   // A constant input from t = 0 with the state at rest is an exact step.
-  const ModelData d = data_for(Eigen::VectorXd::Constant(n, 1.0), ts);
+  const ModelData d = input_record(Eigen::VectorXd::Constant(n, 1.0), ts);
   // Unit static gain: the response settles at 1 (checked within the record
   // for the better-damped cases).
   for (const double zeta : {0.05, 0.3, 0.9}) {
@@ -98,7 +89,7 @@ TEST(FeedbackHysteresis, StepResponseAtZeroAlphaMatchesAnalyticSecondOrder) {
 
 TEST(FeedbackHysteresis, OverdampedStepResponseMatchesAnalytic) {
   const double ts = 1e-3, fn = 20.0, zeta = 1.5, wn = 2.0 * std::numbers::pi * fn;
-  const ModelData d = data_for(Eigen::VectorXd::Constant(500, 1.0), ts);
+  const ModelData d = input_record(Eigen::VectorXd::Constant(500, 1.0), ts);
   Eigen::VectorXd y;
   ASSERT_TRUE(model().simulate(params(fn, zeta, 0.0, 0.0, 0.0), d, y));
   const double s = std::sqrt(zeta * zeta - 1.0);
@@ -112,7 +103,7 @@ TEST(FeedbackHysteresis, OverdampedStepResponseMatchesAnalytic) {
 
 TEST(FeedbackHysteresis, SubstepsConvergeOnAMultisineWithHysteresis) {
   const double ts = 1.0 / 750.0;
-  const ModelData d = data_for(multisine(8000, ts), ts);
+  const ModelData d = input_record(multisine(8000, ts), ts);
   // Benchmark-like: resonance about 25 Hz, strong hysteresis.
   const Eigen::VectorXd x = params(25.0, 0.016, 1.0, 0.53, -0.73, 1.5);
   Model m20 = model(), m40 = model();
@@ -141,16 +132,16 @@ TEST(FeedbackHysteresis, ExactlyLinearAtNeutralAlpha) {
   const Model m = model();
   for (const Eigen::VectorXd& x : {params(30.0, 0.1, 0.0, 2.0, -2.0), m.neutral()}) {
     Eigen::VectorXd y1, y2, y12;
-    ASSERT_TRUE(m.simulate(x, data_for(u1, ts), y1));
-    ASSERT_TRUE(m.simulate(x, data_for(u2, ts), y2));
-    ASSERT_TRUE(m.simulate(x, data_for(2.0 * u1 - 3.0 * u2, ts), y12));
+    ASSERT_TRUE(m.simulate(x, input_record(u1, ts), y1));
+    ASSERT_TRUE(m.simulate(x, input_record(u2, ts), y2));
+    ASSERT_TRUE(m.simulate(x, input_record(2.0 * u1 - 3.0 * u2, ts), y12));
     EXPECT_LT((y12 - (2.0 * y1 - 3.0 * y2)).cwiseAbs().maxCoeff(), 1e-12 * y12.cwiseAbs().maxCoeff());
   }
   // With alpha > 0 it is not.
   const Eigen::VectorXd x = params(30.0, 0.1, 1.0, 0.5, 0.2);
   Eigen::VectorXd y1, y2;
-  ASSERT_TRUE(m.simulate(x, data_for(u1, ts), y1));
-  ASSERT_TRUE(m.simulate(x, data_for(2.0 * u1, ts), y2));
+  ASSERT_TRUE(m.simulate(x, input_record(u1, ts), y1));
+  ASSERT_TRUE(m.simulate(x, input_record(2.0 * u1, ts), y2));
   EXPECT_GT((y2 - 2.0 * y1).norm(), 1e-3 * y2.norm());
 }
 
@@ -160,13 +151,13 @@ TEST(FeedbackHysteresis, NeutralIsAnExactPassThrough) {
   for (Eigen::Index k = 0; k < u.size(); ++k) u[k] = std::sin(2.0 * std::numbers::pi * 2.0 * ts * double(k));
   Eigen::VectorXd y;
   const Model m = model();
-  ASSERT_TRUE(m.simulate(m.neutral(), data_for(u, ts), y));
+  ASSERT_TRUE(m.simulate(m.neutral(), input_record(u, ts), y));
   EXPECT_EQ(y, u);  // period 0: infinitely stiff
 }
 
 TEST(FeedbackHysteresis, InvalidOrDivergingParametersFail) {
   const double ts = 1e-3;
-  const ModelData d = data_for(multisine(3000, ts, 3.0), ts);
+  const ModelData d = input_record(multisine(3000, ts, 3.0), ts);
   const Model m = model();
   Eigen::VectorXd y;
   EXPECT_FALSE(m.simulate(params(30.0, 0.0, 0.5, 0.1, 0.1), d, y)) << "zeta = 0";
@@ -193,7 +184,7 @@ TEST(FeedbackHysteresis, InvalidOrDivergingParametersFail) {
 // refused; by default (no fixed count) both run.
 TEST(FeedbackHysteresis, AFixedCountRaisesAStiffOscillatorOnlyTenfold) {
   const double ts = 1e-3;
-  const ModelData d = data_for(multisine(500, ts, 3.0), ts);
+  const ModelData d = input_record(multisine(500, ts, 3.0), ts);
   Model fixed = model();
   fixed.set_substeps(5);
   const Model by_default = model();

@@ -92,16 +92,14 @@ struct DuffingSpring {
     // half an RMS escape on one side, and with k3 > k2²/3 the force rises
     // monotonically again. Wider boxes only sent the global searches into
     // stiffer oscillators, with more sub-steps.
-    i.params = {
-        {"period", 0.0, 0.2, 0.0, 0, 0, "s",
-         "natural period 2 pi sqrt(m/k) at small strokes (0 = infinitely stiff: pass-through)"},
-        {"zeta", 1e-3, 2.0, 0.5, 0, 0, "", "damping ratio c/(2 sqrt(k m))"},
+    i.params = oscillator_params({
         {"k2", -1.0, 1.0, 0.0, -1, 0, "",
-         "quadratic stiffness relative to the linear one: an asymmetric spring (physical value in 1/output unit)"},
+         "quadratic stiffness relative to the linear one: an asymmetric spring (physical value in 1/output "
+         "unit)"},
         {"k3", -0.2, 1.0, 0.0, -2, 0, "",
          "cubic stiffness relative to the linear one: > 0 hardening, < 0 softening (physical value in "
          "1/output unit²)"},
-    };
+    });
     i.signature =
         "the error grows with amplitude near the resonance and the resonance moves with amplitude: a "
         "spring that stiffens or softens with deflection, the same at every drive rate";

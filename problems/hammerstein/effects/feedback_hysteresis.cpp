@@ -79,17 +79,14 @@ struct BoucWen {
     i.citation = "Noel & Schoukens, Hysteretic benchmark with a dynamic nonlinearity, 2016";
     i.stage = EffectStage::Dynamics;
     i.extends = "msd";
-    i.params = {
-        {"period", 0.0, 0.2, 0.0, 0, 0, "s",
-         "natural period 2 pi sqrt(m/k) of the linear part (0 = infinitely stiff: pass-through)"},
-        {"zeta", 1e-3, 2.0, 0.5, 0, 0, "", "damping ratio c/(2 sqrt(k m))"},
+    i.params = oscillator_params({
         {"alpha", 0.0, 4.0, 0.0, 0, 0, "",
          "hysteretic stiffness relative to the linear one, alpha/k (0: no hysteresis)"},
         {"beta_gamma", -3.0, 3.0, 0.0, -1, 0, "",
          "beta*gamma: loop shape term |y'| z (physical value in 1/output unit)"},
         {"beta_delta", -3.0, 3.0, 0.0, -1, 0, "",
          "beta*delta: loop shape term y' |z| (physical value in 1/output unit)"},
-    };
+    });
     i.signature =
         "a Hammerstein chain fits the low-amplitude part but the error grows with amplitude "
         "near the resonance: the hysteresis is driven by the output velocity inside the "

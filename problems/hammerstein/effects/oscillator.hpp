@@ -25,7 +25,7 @@
 // 0; output k + 1 is the state after the interval from sample k to k + 1.
 //
 // A law is a class with
-//   static EffectInfo info();   // params: period, zeta, then the law's own
+//   static EffectInfo info();   // params: oscillator_params(the law's own)
 //   static std::optional<OscillatorLaw> coefficients(std::span<const double> law_params);
 //   template <class V> static V excess(const OscillatorRates<V>&, V w, V y, V z);  // w − f(y, z)
 //   template <class V> static V zdot(const OscillatorRates<V>&, V y, V v, V z);   // g
@@ -65,6 +65,18 @@ struct OscillatorLaw {
   double stiffening = 1.0;
   bool kinks = false;
 };
+
+// The parameters every law starts with, then `own`: the natural period of
+// the linear part and the damping ratio, as msd names them.
+inline std::vector<EffectParam> oscillator_params(std::vector<EffectParam> own) {
+  std::vector<EffectParam> p = {
+      {"period", 0.0, 0.2, 0.0, 0, 0, "s",
+       "natural period 2 pi sqrt(m/k) of the linear part (0 = infinitely stiff: pass-through)"},
+      {"zeta", 1e-3, 2.0, 0.5, 0, 0, "", "damping ratio c/(2 sqrt(k m))"},
+  };
+  p.insert(p.end(), own.begin(), own.end());
+  return p;
+}
 
 template <class Law>
 class Oscillator : public Effect {
