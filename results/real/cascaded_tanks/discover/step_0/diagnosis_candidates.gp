@@ -21,7 +21,7 @@ do for [ext in "svg png pdf"] {
 set datafile separator ','
 set style fill solid 0.45 border
 set boxwidth bar
-set xrange [-0.6:10.6]
+set xrange [-0.6:11.6]
 set lmargin 14
 set xtics rotate by 45 right nomirror noenhanced
 set key outside top center vertical maxrows 2
