@@ -14,10 +14,10 @@
 namespace hystbench {
 namespace {
 
-// gain, period, zeta, k2, k3.
-Eigen::VectorXd params(double fn, double zeta, double k2, double k3, double gain = 1.0) {
-  Eigen::VectorXd x(5);
-  x << gain, 1.0 / fn, zeta, k2, k3;
+// gain, period, zeta, k2, k3, drag.
+Eigen::VectorXd params(double fn, double zeta, double k2, double k3, double gain = 1.0, double drag = 0.0) {
+  Eigen::VectorXd x(6);
+  x << gain, 1.0 / fn, zeta, k2, k3, drag;
   return x;
 }
 
@@ -34,7 +34,8 @@ Model model() { return Model::parse("duffing"); }
 
 TEST(Duffing, DeclaresMsdParameterNamesAndExtendsMsd) {
   const Model m = model();
-  const std::vector<std::string> names = {"gain", "duffing.period", "duffing.zeta", "duffing.k2", "duffing.k3"};
+  const std::vector<std::string> names = {"gain",       "duffing.period", "duffing.zeta",
+                                          "duffing.k2", "duffing.k3",     "duffing.drag"};
   EXPECT_EQ(m.parameter_names(), names);
   EXPECT_EQ(EffectRegistry::instance().find("duffing", "test").extends, "msd");
   EXPECT_TRUE(m.bounds().contains(m.neutral()));
@@ -90,8 +91,8 @@ TEST(Duffing, ASofteningSpringThatEscapesFails) {
 TEST(Duffing, TheReadingNamesAHardeningOrSofteningSpring) {
   const auto& reading = EffectRegistry::instance().find("duffing", "test").reading;
   ASSERT_TRUE(reading);
-  const auto read = [&](double k2, double k3) {
-    const std::vector<double> p = {0.01, 0.1, k2, k3};
+  const auto read = [&](double k2, double k3, double drag = 0.0) {
+    const std::vector<double> p = {0.01, 0.1, k2, k3, drag};
     return reading(p);
   };
   // At twice the RMS: 1 + 2·k2·2 + 3·k3·4 above rest, 1 − 2·k2·2 + 3·k3·4 below.
@@ -102,9 +103,36 @@ TEST(Duffing, TheReadingNamesAHardeningOrSofteningSpring) {
       << read(-0.1, 0.5);
   EXPECT_NE(read(0.0, -0.05).find("a softening spring"), std::string::npos);
   EXPECT_EQ(read(0.0, 0.0), "");
+  // drag / (2 zeta) = 0.02 / 0.2.
+  EXPECT_NE(read(0.0, 0.5, 0.02).find("hardening spring"), std::string::npos);
+  EXPECT_NE(read(0.0, 0.5, 0.02).find("; a quadratic drag (0.02, normalised) adds 10 % to the linear damping"),
+            std::string::npos)
+      << read(0.0, 0.5, 0.02);
+  EXPECT_EQ(read(0.0, 0.0, 0.02).rfind("is a linear spring with a quadratic drag", 0), 0u) << read(0.0, 0.0, 0.02);
 }
 
-// A fit recovers a planted spring from a three-sine record to the noise.
+// Driven at its resonance, a linear spring with a quadratic drag settles
+// where the equivalent viscous damping balances the drive (harmonic
+// balance: the fundamental of v|v| for v = V sin is 8/(3 pi) V²). With
+// w = F sin(wn t) and y = A cos(wn t): A (2 zeta + 8 drag A / (3 pi)) = F.
+TEST(Duffing, ADragLimitsTheResonanceAsHarmonicBalanceSays) {
+  const double zeta = 0.05, drag = 0.2, force = 0.1, fn = 10.0, ts = 1.0 / 400.0;
+  const Eigen::Index n = 8000, period = 40;  // 200 periods; the last 20 are measured
+  Eigen::VectorXd u(n);
+  for (Eigen::Index k = 0; k < n; ++k) u[k] = force * std::sin(2.0 * std::numbers::pi * fn * ts * double(k));
+  const auto amplitude = [&](double d) {
+    Eigen::VectorXd y;
+    EXPECT_TRUE(model().simulate(params(fn, zeta, 0.0, 0.0, 1.0, d), input_record(u, ts), y));
+    return y.tail(20 * period).cwiseAbs().maxCoeff();
+  };
+  const double b = 8.0 * drag / (3.0 * std::numbers::pi);
+  const double expected = (-2.0 * zeta + std::sqrt(4.0 * zeta * zeta + 4.0 * b * force)) / (2.0 * b);
+  EXPECT_NEAR(amplitude(drag), expected, 0.02 * expected);
+  EXPECT_NEAR(amplitude(0.0), force / (2.0 * zeta), 0.01 * force / (2.0 * zeta)) << "without the drag: F / 2 zeta";
+}
+
+// A fit recovers a planted spring and drag from a three-sine record to the
+// noise.
 TEST(Duffing, AFitRecoversAPlantedSpring) {
   const nlohmann::json excitation = {
       {"sample_rate", 500},
@@ -117,7 +145,8 @@ TEST(Duffing, AFitRecoversAPlantedSpring) {
                                 {"duffing.period", 0.025},
                                 {"duffing.zeta", 0.2},
                                 {"duffing.k2", -0.004},
-                                {"duffing.k3", 0.0015}};
+                                {"duffing.k3", 0.0015},
+                                {"duffing.drag", 0.003}};
   const SyntheticData s = make_model_synthetic_data(m, truth, excitation, 0.01, 7, "test");
   const ModelData d(s.data, SignalScales::of(s.data));
   FitOptions o;
@@ -132,6 +161,7 @@ TEST(Duffing, AFitRecoversAPlantedSpring) {
   EXPECT_NEAR(values["duffing.k3"].get<double>(), 0.0015, 0.0015 * 0.05);
   EXPECT_NEAR(values["duffing.k2"].get<double>(), -0.004, 0.004 * 0.1);
   EXPECT_NEAR(values["duffing.period"].get<double>(), 0.025, 0.025 * 0.01);
+  EXPECT_NEAR(values["duffing.drag"].get<double>(), 0.003, 0.003 * 0.1);
 }
 
 }  // namespace

@@ -22,16 +22,23 @@
 namespace hystbench {
 namespace {
 
-std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOptions& o) {
-  std::vector<std::string> all = o.candidates;
-  if (all.empty())
-    for (const auto* info : EffectRegistry::instance().all()) all.push_back(info->name);
-  std::vector<std::string> out;
-  for (const auto& name : all)
-    if (!model.has(name) && std::find(o.exclude.begin(), o.exclude.end(), name) == o.exclude.end())
-      out.push_back(name);
-  return out;
+// Whether the model already holds the role `name` would take: an effect
+// that extends it (msd, once duffing replaced it), or another extension of
+// the same base (feedback_hysteresis beside duffing). Model::with would put
+// either in series with the one there, a second resonance, which is
+// second_mode's role; fitting it only cost a candidate fit at every rung
+// (on Silverbox two of twelve, among the slowest). Candidates the user
+// names are tried as named.
+bool role_taken(const Model& model, const std::string& name) {
+  const auto& registry = EffectRegistry::instance();
+  const std::string& base = registry.find(name, "effect").extends;
+  for (const auto& other : model.effects()) {
+    const std::string& other_base = registry.find(other, "effect").extends;
+    if (other_base == name || (!base.empty() && other_base == base)) return true;
+  }
+  return false;
 }
+
 
 ComparisonInput current_comparison(const Model& model, const Eigen::VectorXd& x,
                                    const ModelData& data, const DiagnoseOptions& o) {
@@ -115,6 +122,19 @@ Candidate try_candidate(const std::string& effect, const Diagnosis& current, con
 }
 
 }  // namespace
+
+std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOptions& o) {
+  std::vector<std::string> all = o.candidates;
+  const bool whole_catalog = all.empty();
+  if (whole_catalog)
+    for (const auto* info : EffectRegistry::instance().all()) all.push_back(info->name);
+  std::vector<std::string> out;
+  for (const auto& name : all)
+    if (!model.has(name) && !(whole_catalog && role_taken(model, name)) &&
+        std::find(o.exclude.begin(), o.exclude.end(), name) == o.exclude.end())
+      out.push_back(name);
+  return out;
+}
 
 double bic(double sse, long n, int k) {
   return double(n) * std::log(std::max(sse, 1e-300) / double(n)) + double(k) * std::log(double(n));

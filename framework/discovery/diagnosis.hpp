@@ -104,6 +104,13 @@ struct Diagnosis {
   nlohmann::json to_json() const;
 };
 
+// The effects a diagnosis of `model` tries: options.candidates, or by
+// default every registered effect, less those the model has, those in
+// options.exclude and, by default, those whose role the model already holds
+// (an effect that replaces msd beside another: it would be a second
+// resonance in series, second_mode's role).
+std::vector<std::string> candidate_effects(const Model& model, const DiagnoseOptions& options);
+
 // BIC of a fit with `k` parameters: N ln(SSE/N) + k ln N over the
 // estimation samples.
 double bic(double sse, long n, int k);

@@ -100,8 +100,9 @@ struct BoucWen {
   }
 
 
-  // p = (alpha, beta_gamma, beta_delta).
-  static std::optional<OscillatorLaw> coefficients(std::span<const double> p) {
+  // p = (alpha, beta_gamma, beta_delta); the force is rate-independent, so
+  // the coefficients do not depend on the time unit ws.
+  static std::optional<OscillatorLaw> coefficients(std::span<const double> p, double) {
     const double a = p[0], bg = p[1], bd = p[2];
     if (!std::isfinite(a) || !std::isfinite(bg) || !std::isfinite(bd) || a <= -1.0) return std::nullopt;
     return OscillatorLaw{{a, bg, bd}, 1.0 + std::max(a, 0.0), a != 0.0};
@@ -109,7 +110,7 @@ struct BoucWen {
 
   // Restoring force y + z.
   template <class V>
-  static V excess(const OscillatorRates<V>&, V w, V y, V z) {
+  static V excess(const OscillatorRates<V>&, V w, V y, V, V z) {
     return w - y - z;
   }
 

@@ -2,7 +2,7 @@
 // A mass-spring-damper whose restoring force a law sets, integrated in
 // continuous time (the effects feedback_hysteresis and duffing):
 //
-//   y''/wn^2 + 2 zeta y'/wn + f(y, z) = w,   z' = g(y, y', z),
+//   y''/wn^2 + 2 zeta y'/wn + f(y, y'/wn, z) = w,   z' = g(y, y', z),
 //
 // in normalised units, with unit static gain at small amplitude. Its first
 // two parameters are the natural period (0 = infinitely stiff: the effect
@@ -26,8 +26,8 @@
 //
 // A law is a class with
 //   static EffectInfo info();   // params: oscillator_params(the law's own)
-//   static std::optional<OscillatorLaw> coefficients(std::span<const double> law_params);
-//   template <class V> static V excess(const OscillatorRates<V>&, V w, V y, V z);  // w − f(y, z)
+//   static std::optional<OscillatorLaw> coefficients(std::span<const double> law_params, double ws);
+//   template <class V> static V excess(const OscillatorRates<V>&, V w, V y, V v, V z);  // w − f(y, v, z)
 //   template <class V> static V zdot(const OscillatorRates<V>&, V y, V v, V z);   // g
 // and an effect file registers HYSTBENCH_EFFECT(hystbench::Oscillator<Law>).
 // The one-candidate, block and streaming forms all run the same law code,
@@ -150,13 +150,13 @@ class Oscillator : public Effect {
     const double period = p[0], zeta = p[1];
     if (period == 0.0) return EffectSetup::PassThrough;
     const double fn = 1.0 / period;
-    const std::optional<OscillatorLaw> law = Law::coefficients(p.subspan(2));
-    if (!(period > 0.0) || !std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !(ts > 0.0) || !law)
+    if (!(period > 0.0) || !std::isfinite(fn) || !(zeta > 0.0) || !std::isfinite(zeta) || !(ts > 0.0))
       return EffectSetup::Invalid;
-    // Time in samples: w_s = wn * Ts rad per sample. The laws' forces are
-    // rate-independent, so their coefficients do not change with the time
-    // unit.
+    // Time in samples: w_s = wn * Ts rad per sample. A law whose force
+    // depends on the velocity needs it to convert y'/wn into samples.
     const double ws = 2.0 * std::numbers::pi * fn * ts;
+    const std::optional<OscillatorLaw> law = Law::coefficients(p.subspan(2), ws);
+    if (!law) return EffectSetup::Invalid;
     // Largest eigenvalue modulus of the linearised system, bounded by
     // ws_eff (zeta + sqrt(zeta^2 + 1)); keep |lambda| h <= 1.
     const double stiff = ws * std::sqrt(law->stiffening) * (zeta + std::sqrt(zeta * zeta + 1.0));
@@ -177,13 +177,13 @@ class Oscillator : public Effect {
   static StateOf<V> rk4(const Rates<V>& c, const StateOf<V>& s, V wa, V wm, V wb, double step) {
     const V w2 = c.w2, c1 = c.c1;
     const double half = 0.5 * step, sixth = step / 6.0;
-    const V k1y = s.v, k1v = w2 * Law::excess(c, wa, s.y, s.z) - c1 * s.v, k1z = Law::zdot(c, s.y, s.v, s.z);
+    const V k1y = s.v, k1v = w2 * Law::excess(c, wa, s.y, s.v, s.z) - c1 * s.v, k1z = Law::zdot(c, s.y, s.v, s.z);
     const V y2 = s.y + half * k1y, v2 = s.v + half * k1v, z2 = s.z + half * k1z;
-    const V k2y = v2, k2v = w2 * Law::excess(c, wm, y2, z2) - c1 * v2, k2z = Law::zdot(c, y2, v2, z2);
+    const V k2y = v2, k2v = w2 * Law::excess(c, wm, y2, v2, z2) - c1 * v2, k2z = Law::zdot(c, y2, v2, z2);
     const V y3 = s.y + half * k2y, v3 = s.v + half * k2v, z3 = s.z + half * k2z;
-    const V k3y = v3, k3v = w2 * Law::excess(c, wm, y3, z3) - c1 * v3, k3z = Law::zdot(c, y3, v3, z3);
+    const V k3y = v3, k3v = w2 * Law::excess(c, wm, y3, v3, z3) - c1 * v3, k3z = Law::zdot(c, y3, v3, z3);
     const V y4 = s.y + step * k3y, v4 = s.v + step * k3v, z4 = s.z + step * k3z;
-    const V k4y = v4, k4v = w2 * Law::excess(c, wb, y4, z4) - c1 * v4, k4z = Law::zdot(c, y4, v4, z4);
+    const V k4y = v4, k4v = w2 * Law::excess(c, wb, y4, v4, z4) - c1 * v4, k4z = Law::zdot(c, y4, v4, z4);
     return StateOf<V>{s.y + sixth * (k1y + 2.0 * (k2y + k3y) + k4y),
                       s.v + sixth * (k1v + 2.0 * (k2v + k3v) + k4v),
                       s.z + sixth * (k1z + 2.0 * (k2z + k3z) + k4z)};
