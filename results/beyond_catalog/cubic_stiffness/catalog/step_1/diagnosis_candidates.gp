@@ -9,8 +9,8 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 0.009881768025  # current model, estimation RMSE
-current_heldout = 0.01001717485  # current model, held-out RMSE
+current_estimation = 0.009879425675  # current model, estimation RMSE
+current_heldout = 0.0100177473  # current model, held-out RMSE
 sigma = 0.009756945923  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
@@ -21,8 +21,8 @@ do for [ext in "svg png pdf"] {
 set datafile separator ','
 set style fill solid 0.45 border
 set boxwidth bar
-set xrange [-0.6:10.6]
-set lmargin 14
+set xrange [-0.6:8.6]
+set lmargin 10
 set xtics rotate by 45 right nomirror noenhanced
 set key outside top center vertical maxrows 2
 set grid ytics
