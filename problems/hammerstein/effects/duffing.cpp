@@ -17,8 +17,8 @@
 // than bilinearly.
 //
 // Why the drag: on Silverbox, once the spring is right, `propose` names
-// y'|y'| first, and with it the arrow test's error falls by a fifth
-// (docs/discovery.md, "Measured benchmarks"). A quadratic drag is the usual
+// y'|y'| first, and with it the arrow test's error falls from 0.389 to
+// 0.331 mV (docs/discovery.md, "Measured benchmarks"). A quadratic drag is the usual
 // amplitude-dependent loss of a vibrating structure (air, fluid, joints):
 // its equivalent viscous damping grows in proportion to the amplitude.
 //
