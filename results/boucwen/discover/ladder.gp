@@ -1,4 +1,4 @@
-# ladder.gp: the error falling as effects are added
+# ladder.gp: the error falling as effects are added (σ: the noise sd)
 #
 # Reads ladder.csv.
 # To re-render after editing, run inside this folder:
@@ -14,7 +14,7 @@ do for [ext in "svg png pdf"] {
   if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
   set output "ladder.".ext
 set datafile separator ','
-set key outside top center horizontal
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set grid
 set logscale y
 set xtics noenhanced
@@ -24,8 +24,8 @@ set ylabel "RMSE [m]"
 set title "Discovery from hysteresis,asymmetry,msd,arx" noenhanced
 sigma = 7.420350323e-06
 truth = NaN
-plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation RMSE', \
-     '' using 1:4 with linespoints lw 2 pt 5 title 'held-out RMSE', \
-     sigma with lines dt 2 lw 2 lc rgb '#808080' title 'estimated noise σ'
+plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation', \
+     '' using 1:4 with linespoints lw 2 pt 5 title 'held out', \
+     sigma with lines dt 2 lw 2 lc rgb '#808080' title 'σ estimated'
 }
 unset output

@@ -10,15 +10,15 @@
 set encoding utf8
 residual_label = "Residual y − ŷ [m]"
 sigma = 5.510444613e-08  # noise floor estimate
-set title "Residual — Model feedback_hysteresis against test_sinesweep.csv" noenhanced offset 0, 1.2
+set title "Residual — Model feedback_hysteresis against test_sinesweep.csv" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
 set grid lt 1 lc rgb "#e0e0e0" lw 1
 set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
-set tmargin 4
-set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
+  set ytics -5e-06, 5e-06, 7.058127251e-06
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

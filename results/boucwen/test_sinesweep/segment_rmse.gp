@@ -12,16 +12,15 @@ rmse_label = "RMSE [m]"
 sigma = 5.510444613e-08  # noise floor estimate
 set title "Error per segment — Model feedback_hysteresis against test_sinesweep.csv" noenhanced
 set ylabel rmse_label
-set yrange [0:*]
+set yrange [0:2.593632974e-06]
 set xrange [-0.6:0.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
 # Many segments: names upright, ending at their bar, so none leaves the page.
 set xtics nomirror noenhanced
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
-set title offset 0, 1.2
-set tmargin 4
-set key at graph 0, graph 1.01 left bottom horizontal samplen 2
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
+  set ytics 0, 5e-07, 2.401512013e-06
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

@@ -9,19 +9,19 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 7.35732058e-06  # current model, estimation RMSE
-current_heldout = 7.39643321e-06  # current model, held-out RMSE
+current_estimation = 7.357512704e-06  # current model, estimation RMSE
+current_heldout = 7.396593781e-06  # current model, held-out RMSE
 sigma = 7.420350323e-06  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
-  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
-  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
-  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "diagnosis_candidates.".ext
 set datafile separator ','
 set style fill solid 0.45 border
 set boxwidth bar
-set xrange [-0.6:10.6]
+set xrange [-0.6:9.6]
 set lmargin 10
 set xtics rotate by 45 right nomirror noenhanced
 set key outside top center vertical maxrows 2
@@ -31,8 +31,8 @@ set ylabel "RMSE [m]"
 set title "RMSE after adding one effect to feedback_hysteresis" noenhanced
 plot 'diagnosis_candidates.csv' skip 1 using ($0 - 0.19):2:xtic(1) with boxes lc rgb '#0072B2' title 'estimation', \
      'diagnosis_candidates.csv' skip 1 using ($0 + 0.19):3 with boxes lc rgb '#D55E00' title 'held out', \
-     'diagnosis_candidates.csv' skip 1 using ($0 - 0.37):(current_estimation):(bar):(0) with vectors nohead lw 3 lc rgb '#0072B2' title 'current model, estimation', \
-     'diagnosis_candidates.csv' skip 1 using ($0 + 0.01):(current_heldout):(bar):(0) with vectors nohead lw 3 lc rgb '#D55E00' title 'current model, held out', \
+     'diagnosis_candidates.csv' skip 1 using ($0 - 0.37):(current_estimation):(bar):(0) with vectors nohead lw 3 lc rgb '#0072B2' title 'current, estimation', \
+     'diagnosis_candidates.csv' skip 1 using ($0 + 0.01):(current_heldout):(bar):(0) with vectors nohead lw 3 lc rgb '#D55E00' title 'current, held out', \
      sigma with lines lw 2 dt 3 lc rgb '#808080' title 'noise floor σ'
 }
 unset output

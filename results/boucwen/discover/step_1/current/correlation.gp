@@ -11,7 +11,7 @@ set encoding utf8
 acf_bound = 0.01274793182
 ccf_bound = 0.01274793182
 set grid lt 1 lc rgb "#e0e0e0" lw 1
-set key top right opaque samplen 2
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set ylabel "Correlation"
 set xtics 5
 set mxtics 5
@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Current model feedback_hysteresis" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.1955571451:0.1955571451]
+  set yrange [-0.1956013001:0.1956013001]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.01831425239:0.01831425239]
+  set yrange [-0.01837565781:0.01837565781]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

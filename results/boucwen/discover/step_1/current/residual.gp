@@ -10,15 +10,15 @@
 set encoding utf8
 residual_label = "Residual y − ŷ [m]"
 sigma = 7.420350323e-06  # noise floor estimate
-set title "Residual — Current model feedback_hysteresis" noenhanced offset 0, 1.2
+set title "Residual — Current model feedback_hysteresis" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
 set grid lt 1 lc rgb "#e0e0e0" lw 1
 set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
-set tmargin 4
-set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
+  set ytics -2e-05, 2e-05, 2.95015118e-05
 set object rect from 5.119333333, graph 0 to 6.825999997, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 11.94600003, graph 0 to 13.65266667, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 18.77266663, graph 0 to 20.47933337, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
