@@ -18,7 +18,7 @@
 //
 // Why the drag: on Silverbox, once the spring is right, `propose` names
 // y'|y'| first, and with it the arrow test's error falls from 0.389 to
-// 0.331 mV (docs/discovery.md, "Measured benchmarks"). A quadratic drag is the usual
+// 0.316 mV (docs/discovery.md, "Measured benchmarks"). A quadratic drag is the usual
 // amplitude-dependent loss of a vibrating structure (air, fluid, joints):
 // its equivalent viscous damping grows in proportion to the amplitude.
 //
@@ -117,6 +117,9 @@ struct DuffingSpring {
     // half an RMS escape on one side, and with k3 > k2²/3 the force rises
     // monotonically again. Wider boxes only sent the global searches into
     // stiffer oscillators, with more sub-steps.
+    // A drag only takes energy out: drag >= 0. Allowed below 0, it stood in
+    // for dry friction (a planted Coulomb force, tests/beyond_catalog.sh),
+    // whose equivalent damping falls with the speed.
     i.params = oscillator_params({
         {"k2", -1.0, 1.0, 0.0, -1, 0, "",
          "quadratic stiffness relative to the linear one: an asymmetric spring (physical value in 1/output "
@@ -124,7 +127,7 @@ struct DuffingSpring {
         {"k3", -0.2, 1.0, 0.0, -2, 0, "",
          "cubic stiffness relative to the linear one: > 0 hardening, < 0 softening (physical value in "
          "1/output unit²)"},
-        {"drag", -0.1, 0.5, 0.0, -1, 0, "",
+        {"drag", 0.0, 0.5, 0.0, -1, 0, "",
          "quadratic damping (y'/wn)|y'/wn| relative to the linear stiffness: a drag growing with the "
          "square of the speed (physical value in 1/output unit)"},
     });

@@ -9,8 +9,8 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 0.009879425675  # current model, estimation RMSE
-current_heldout = 0.0100177473  # current model, held-out RMSE
+current_estimation = 0.009875164822  # current model, estimation RMSE
+current_heldout = 0.01001330772  # current model, held-out RMSE
 sigma = 0.009756945923  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
@@ -21,14 +21,14 @@ do for [ext in "svg png pdf"] {
 set datafile separator ','
 set style fill solid 0.45 border
 set boxwidth bar
-set xrange [-0.6:8.6]
+set xrange [-0.6:7.6]
 set lmargin 10
 set xtics rotate by 45 right nomirror noenhanced
 set key outside top center vertical maxrows 2
 set grid ytics
 set logscale y
 set ylabel "RMSE"
-set title "RMSE after adding one effect to duffing,arx" noenhanced
+set title "RMSE after adding one effect to hysteresis,duffing,arx" noenhanced
 plot 'diagnosis_candidates.csv' skip 1 using ($0 - 0.19):2:xtic(1) with boxes lc rgb '#0072B2' title 'estimation', \
      'diagnosis_candidates.csv' skip 1 using ($0 + 0.19):3 with boxes lc rgb '#D55E00' title 'held out', \
      'diagnosis_candidates.csv' skip 1 using ($0 - 0.37):(current_estimation):(bar):(0) with vectors nohead lw 3 lc rgb '#0072B2' title 'current, estimation', \

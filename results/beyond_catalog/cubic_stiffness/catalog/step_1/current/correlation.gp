@@ -21,9 +21,9 @@ do for [ext in "svg png pdf"] {
   if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
   if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "correlation.".ext
-  set multiplot layout 2, 1 title "Residual tests — Current model duffing,arx" noenhanced
+  set multiplot layout 2, 1 title "Residual tests — Current model hysteresis,duffing,arx" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.02708488047:0.02708488047]
+  set yrange [-0.02736449857:0.02736449857]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

@@ -10,7 +10,7 @@
 set encoding utf8
 residual_label = "Residual y − ŷ"
 sigma = 0.009756945923  # noise floor estimate
-set title "Residual — Current model duffing,arx" noenhanced
+set title "Residual — Current model hysteresis,duffing,arx" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
 set grid lt 1 lc rgb "#e0e0e0" lw 1
@@ -18,7 +18,7 @@ set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics -0.02, 0.02, 0.03791878042
+  set ytics -0.02, 0.02, 0.03823479377
 set object rect from 1.1245, graph 0 to 1.4995, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 2.6245, graph 0 to 2.9995, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 4.1245, graph 0 to 4.4995, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder

@@ -10,9 +10,9 @@
 set encoding utf8
 rmse_label = "RMSE"
 sigma = 0.009756945923  # noise floor estimate
-set title "Error per segment — Current model duffing,arx" noenhanced
+set title "Error per segment — Current model hysteresis,duffing,arx" noenhanced
 set ylabel rmse_label
-set yrange [0:0.01070732197]
+set yrange [0:0.01070267157]
 set xrange [-0.6:0.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
@@ -20,7 +20,7 @@ set boxwidth 0.7
 set xtics nomirror noenhanced
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics 0, 0.002, 0.009914187006
+  set ytics 0, 0.002, 0.009909881084
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
