@@ -56,6 +56,15 @@ build_effect() {
     fail "the effect proposed in $1 is not batched, or its blocks differ from single candidates"
 }
 
+# The last ladder step printed in $1 must score within 1.2 x the noise sd
+# held out; $2 names the case in the failure.
+held_out_within_noise() {
+  local rmse
+  rmse=$(grep "^step" "$1" | tail -1 | sed -E 's/.*samples, ([0-9.e+-]+) +on .*held-out.*/\1/')
+  below "$rmse" "$(awk -v s=$noise 'BEGIN { print 1.2 * s }')" ||
+    fail "$2: the held-out RMSE is $rmse, more than 1.2 x $noise"
+}
+
 # Discovery from the model proposal $1 was made from ($3), offered only the
 # generated effect: it must add it, and end within 1.2 x the noise sd held out.
 discover_with_effect() {
@@ -63,10 +72,7 @@ discover_with_effect() {
     --candidates proposed_term --out "$1/discover" > "$1/discover.txt"
   grep -q "^final model: .*proposed_term" "$1/discover.txt" ||
     fail "$2: discover --plugin did not add the proposed effect: $(cat "$1/discover.txt")"
-  local rmse
-  rmse=$(grep "^step" "$1/discover.txt" | tail -1 | sed -E 's/.*samples, ([0-9.e+-]+) +on .*held-out.*/\1/')
-  below "$rmse" "$(awk -v s=$noise 'BEGIN { print 1.2 * s }')" ||
-    fail "$2: with the proposed effect the held-out RMSE is $rmse, more than 1.2 x $noise"
+  held_out_within_noise "$1/discover.txt" "$2 with the proposed effect"
 }
 
 # Rate-dependent gain.
@@ -102,9 +108,7 @@ force_case quadratic_damping drag "x'·|x'|"
 "$hystbench" discover --data drag.csv --start msd --max-steps 1 --out drag-ladder > drag-ladder.txt
 grep -q "^final model: duffing$" drag-ladder.txt || fail "quadratic_damping: discover did not find duffing: $(cat drag-ladder.txt)"
 grep -q "duffing is .*; a quadratic drag" drag-ladder.txt || fail "quadratic_damping: the reading names no drag: $(cat drag-ladder.txt)"
-rmse=$(grep "^step" drag-ladder.txt | tail -1 | sed -E 's/.*samples, ([0-9.e+-]+) +on .*held-out.*/\1/')
-below "$rmse" "$(awk -v s=$noise 'BEGIN { print 1.2 * s }')" ||
-  fail "quadratic_damping: duffing's held-out RMSE is $rmse, more than 1.2 x $noise"
+held_out_within_noise drag-ladder.txt "quadratic_damping with duffing"
 # The stopping share (docs/discovery.md, "Beyond the catalog"): for dry
 # friction the catalog's stand-ins remove under 40 % of the excess error, so
 # discover refuses them and stops at msd, beyond the catalog; propose given
@@ -131,9 +135,10 @@ grep -q "^no effect written: the term .* write its effect by hand" play.txt ||
 grep -q "No effect was written" play/proposals.md || fail "parallel_play: proposals.md does not say no effect was written"
 [[ ! -e play/effect ]] || fail "parallel_play: an effect folder was written for a term without a generated form"
 # Physics no term of the library expresses ($1, in file $2): propose on a
-# fitted msd says so, with the reason $3 among its words.
+# fitted msd says so, with the reason $3 among its words. A record written
+# earlier in this script is used again.
 beyond_case() {
-  "$planted" "$1" "$2.csv" 4000
+  [[ -f "$2.csv" ]] || "$planted" "$1" "$2.csv" 4000
   "$hystbench" fit --data "$2.csv" --model msd --out "$2-msd" >/dev/null
   "$hystbench" propose --data "$2.csv" --fit "$2-msd/fit.json" --out "$2" > "$2.txt"
   grep -q "^The library cannot express what is missing" "$2.txt" ||

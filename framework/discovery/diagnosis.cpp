@@ -39,7 +39,6 @@ bool role_taken(const Model& model, const std::string& name) {
   return false;
 }
 
-
 ComparisonInput current_comparison(const Model& model, const Eigen::VectorXd& x,
                                    const ModelData& data, const DiagnoseOptions& o) {
   Eigen::VectorXd y;
