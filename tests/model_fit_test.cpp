@@ -194,5 +194,37 @@ TEST(ModelFit, SteadyStateSimulationScoresTheLastOfRepeatedPeriods) {
   EXPECT_LT((three - four).cwiseAbs().maxCoeff(), 1e-9);
 }
 
+// A record of n samples whose input is a sine of amplitude amp(k).
+template <class Amplitude>
+ModelData sine_record(Eigen::Index n, Amplitude amp) {
+  ModelData d;
+  d.t = Eigen::VectorXd::LinSpaced(n, 0.0, double(n - 1) * 1e-3);
+  d.u.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) d.u[k] = amp(k) * std::sin(0.37 * double(k));
+  d.y = d.u;
+  d.sample_time = 1e-3;
+  d.estimation = Eigen::VectorXd::Ones(n);
+  return d;
+}
+
+TEST(ModelFit, GlobalStagesSeeTheWholeRecordWhenItsHeadMissesTheLargeStrokes) {
+  FitOptions o;
+  o.screening_samples = 1000;
+  // Steady amplitude: the head stands for the record.
+  EXPECT_EQ(screening_length(sine_record(4000, [](auto) { return 1.0; }), o), 1000);
+  // A handful of spikes at the end (under 0.5 % of the samples) changes nothing.
+  ModelData spiky = sine_record(4000, [](auto) { return 1.0; });
+  for (Eigen::Index k = 3990; k < 4000; ++k) spiky.u[k] = 10.0;
+  EXPECT_EQ(screening_length(spiky, o), 1000);
+  // An arrow, its amplitude growing tenfold: the head holds only small strokes.
+  const auto arrow = sine_record(4000, [](Eigen::Index k) { return 0.1 + double(k) / 4000.0; });
+  EXPECT_EQ(screening_length(arrow, o), 4000);
+  // A record no longer than the screening length is screened whole.
+  o.screening_samples = 5000;
+  EXPECT_EQ(screening_length(arrow, o), 4000);
+  o.screening_samples = 0;
+  EXPECT_EQ(screening_length(arrow, o), 4000);
+}
+
 }  // namespace
 }  // namespace hystbench
