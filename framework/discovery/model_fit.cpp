@@ -122,7 +122,7 @@ Eigen::Index screening_length(const ModelData& d, const FitOptions& o) {
   // samples hold only the small strokes, and a search on them settles in a
   // basin the large ones reject: a Duffing fit of Silverbox's arrow, screened
   // on its first 40 %, polished to twice the error of a fit that never saw
-  // the arrow (docs/discovery.md, "Measured benchmarks").
+  // the arrow (docs/discovery.md, "`hystbench fit`").
   const double whole = input_spread(d.u);
   return input_spread(d.u.head(n)) >= kScreeningSpread * whole ? n : d.size();
 }
