@@ -69,8 +69,8 @@ TEST(CascadedTanksExample, AFullUpperTankSpillsItsShareOfTheExcessIntoTheLowerOn
 }
 
 TEST(CascadedTanksExample, TheSensorClipsTheLevelItReadsButNotTheLevel) {
-  // Ceiling 1/2 on a level that rises above it and falls back: the reading
-  // is the unclipped level wherever that is below 1/2, also after a clip.
+  // Ceiling 1.5 on a level that rises above it and falls back: the reading
+  // is the unclipped level wherever that is below 1.5, also after a clip.
   Eigen::VectorXd w(300);
   for (Eigen::Index k = 0; k < w.size(); ++k) w[k] = 1.0 + 0.8 * std::sin(2.0 * std::numbers::pi * double(k) / 100.0);
   const Eigen::VectorXd level = tanks({std::log10(3.0), std::log10(5.0), 0.5, 0.5, 0.0, 0.0, 0.0}, w);
