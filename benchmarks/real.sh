@@ -9,7 +9,11 @@
 #                 discover folder (its sound rung: the last before a doubtful
 #                 addition); proposals/effect/ holds the first term as a plugin
 #   with_effect/  discover from that rung's model offered only that effect
-#   test_*/       compare of the final fit on each official test record
+#   grey_box/     where the benchmark has one, its physical law written by hand
+#                 as a user's effect (examples/), fitted on the estimation
+#                 record; estimation_*/ score it and discovery's fit there,
+#                 and the lower estimation RMSE is the fit scored on test
+#   test_*/       compare of the scored fit on each official test record
 # then <name>/README.md, README.md and summary.csv (one row per benchmark and
 # test record; RMSE after the warm-up, in the benchmark's unit).
 #
@@ -20,7 +24,8 @@
 # loader; see each folder's README). OUT_DIR defaults to results/real.
 # BENCHMARKS="cascaded_tanks" runs one; MAX_STEPS (default 8) bounds the
 # effects discover adds; DISCOVER_OPTIONS adds options to every discover
-# (the test runs the excerpts with a smaller search budget); BUILD_DIR
+# (the test runs the excerpts with a smaller search budget); GREY_BOX_OPTIONS
+# (default --restarts 8) does the same for the grey box's fit; BUILD_DIR
 # (default build) holds hystbench. Needs python3 to read the JSON results and
 # cmake to build a proposed effect.
 set -euo pipefail
@@ -36,6 +41,7 @@ build="$(cd "${BUILD_DIR:-$repo/build}" && pwd)"
 exe="$build/hystbench"
 max_steps="${MAX_STEPS:-8}"
 read -r -a discover_options <<<"${DISCOVER_OPTIONS:-}"
+read -r -a grey_box_options <<<"${GREY_BOX_OPTIONS:---restarts 8}"
 [[ -x "$exe" ]] || { echo "real.sh: $exe is missing; build hystbench first" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "real.sh: python3 is needed" >&2; exit 2; }
 
@@ -45,6 +51,10 @@ declare -A warmup=([silverbox]=50 [cascaded_tanks]=5)
 # the level (docs/discovery.md, "Initial state"). Silverbox starts at rest.
 declare -A initial=([silverbox]=rest [cascaded_tanks]=held)
 declare -A tests=([silverbox]="test_multisine test_arrow_full test_arrow_no_extrapolation" [cascaded_tanks]="test")
+# A benchmark's physical law as a user's effect: example folder, library,
+# model, and fit options of its own (the tanks' pump voltage is held between
+# samples). Silverbox's law, a cubic spring, is what propose generates.
+declare -A grey_box=([cascaded_tanks]="examples/cascaded_tanks_effect cascaded_tanks cascaded_tanks,offset --input-hold zoh")
 benchmarks=${BENCHMARKS:-silverbox cascaded_tanks}
 for b in $benchmarks; do
   [[ -n ${warmup[$b]:-} ]] || { echo "real.sh: unknown benchmark $b (silverbox, cascaded_tanks)" >&2; exit 2; }
@@ -77,6 +87,47 @@ with_proposal() {
   echo "$dir/with_effect/fit.json"
 }
 
+# The library a fit needs to be simulated (none for catalog effects).
+plugin_of() {
+  local fit=$1 dir=$2
+  case ${fit#"$dir/"} in
+    with_effect/*) echo "--plugin $dir/effect-build/proposed_term.so" ;;
+    grey_box/*) echo "--plugin $dir/grey_box-build/$(cut -d' ' -f2 <<<"${grey_box[$b]}").so" ;;
+  esac
+}
+
+# RMSE on the estimation record after the warm-up, simulated as the test
+# records are (compare writes the report into OUT).
+estimation_rmse() {
+  local fit=$1 dir=$2 out=$3 data=$4 plugin
+  read -r -a plugin <<<"$(plugin_of "$fit" "$dir")"
+  "$exe" compare --data "$data" --fit "$fit" ${plugin[@]+"${plugin[@]}"} --out "$out" --force >"$out.log"
+  python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["all"]["rmse"])' "$out/metrics.json"
+}
+
+# Where the benchmark has a grey box: builds and fits it, and prints
+# whichever of it and FIT scores lower on the estimation record. The test
+# records never take part in the choice.
+with_grey_box() {
+  local dir=$1 data=$2 fit=$3 example library model options
+  if [[ -z ${grey_box[$b]:-} ]]; then echo "$fit"; return; fi
+  read -r example library model options <<<"${grey_box[$b]}"
+  local extra; read -r -a extra <<<"$options"
+  cmake -S "$repo/$example" -B "$dir/grey_box-build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build" >/dev/null
+  cmake --build "$dir/grey_box-build" >/dev/null
+  "$exe" fit --data "$data" --model "$model" --plugin "$dir/grey_box-build/$library.so" --warmup "${warmup[$b]}" \
+    --initial-state "${initial[$b]}" --holdout none --input-unit V --output-unit V ${extra[@]+"${extra[@]}"} \
+    ${grey_box_options[@]+"${grey_box_options[@]}"} --out "$dir/grey_box" --force 2>&1 | tee "$dir/grey_box.log" >&2
+  local from=${fit#"$dir/"} found law
+  from=${from%%/*}
+  found=$(estimation_rmse "$fit" "$dir" "$dir/estimation_$from" "$data")
+  law=$(estimation_rmse "$dir/grey_box/fit.json" "$dir" "$dir/estimation_grey_box" "$data")
+  { echo "estimation_rmse_$from=$found"; echo "estimation_rmse_grey_box=$law"
+    echo "grey_box=$example $model ${extra[*]} ${grey_box_options[*]}"; } >>"$dir/timings.txt"
+  python3 -c 'import sys; print(sys.argv[3] if float(sys.argv[2]) < float(sys.argv[1]) else sys.argv[4])' \
+    "$found" "$law" "$dir/grey_box/fit.json" "$fit"
+}
+
 run_benchmark() {
   local b=$1 dir="$out/$1" data="$data_root/$1/estimation.csv"
   rm -rf "$dir" && mkdir -p "$dir"
@@ -89,16 +140,18 @@ run_benchmark() {
   local fit
   fit=$(with_proposal "$dir" "$data")
   echo "proposal_seconds=$((SECONDS - t0))" >>"$dir/timings.txt"
+  t0=$SECONDS
+  fit=$(with_grey_box "$dir" "$data" "$fit")
+  [[ -z ${grey_box[$b]:-} ]] || echo "grey_box_seconds=$((SECONDS - t0))" >>"$dir/timings.txt"
   echo "scored_fit=${fit#"$dir/"}" >>"$dir/timings.txt"
-  # A fit with the proposed effect needs its library to be simulated.
-  local plugin=()
-  [[ $fit == "$dir/with_effect/fit.json" ]] && plugin=(--plugin "$dir/effect-build/proposed_term.so")
+  local plugin
+  read -r -a plugin <<<"$(plugin_of "$fit" "$dir")"
   for t in ${tests[$b]}; do
     "$exe" compare --data "$data_root/$b/$t.csv" --fit "$fit" ${plugin[@]+"${plugin[@]}"} --out "$dir/$t" --force \
       >"$dir/$t.log"
   done
   # What is committed: reports, JSON, gnuplot scripts and PNG figures.
-  rm -rf "$dir/effect-build"
+  rm -rf "$dir/effect-build" "$dir/grey_box-build"
   find "$dir" \( -name '*.pdf' -o -name '*.svg' -o -name '*.dat' -o -name fit_model.csv -o -name gnuplot.log \
                  -o -name checkpoint.json \) -delete
 }

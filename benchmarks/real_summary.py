@@ -89,6 +89,19 @@ def number(v):
     return "" if v is None else f"{v:.4g}"
 
 
+def grey_box_line(t, spec):
+    """The benchmark's physical law as a user's effect, and how it fared against discovery on estimation."""
+    example, model, *options = t["grey_box"].split()
+    found = next(k for k in t if k.startswith("estimation_rmse_") and k != "estimation_rmse_grey_box")
+    unit, factor = spec["unit"], spec["factor"]
+    return (f"- Grey box: the benchmark's physical law written by hand as a user's effect "
+            f"([{example}](../../../{example})), `fit --model {model} {' '.join(options)}` on the estimation "
+            f"record ({t['grey_box_seconds']} s): estimation RMSE {factor * float(t['estimation_rmse_grey_box']):.4g} {unit}, "
+            f"beside {factor * float(t[found]):.4g} {unit} for `{found.removeprefix('estimation_rmse_')}/fit.json`. The "
+            f"lower estimation RMSE is scored on test ([estimation_grey_box](estimation_grey_box/report.md)); the "
+            f"test records take no part in the choice.")
+
+
 def benchmark_readme(out, name, rows, t):
     spec = BENCHMARKS[name]
     directory = os.path.join(out, name)
@@ -111,6 +124,8 @@ def benchmark_readme(out, name, rows, t):
                 if line.startswith("  1.") or line.startswith("no effect written")]
         lines.append("- The ladder ended beyond the catalog: [proposals/proposals.md](proposals/proposals.md). "
                      "propose said: " + " ".join(f"`{t}`" for t in said) + ".")
+    if "grey_box" in t:
+        lines.append(grey_box_line(t, spec))
     options = t.get("discover_options", "")
     lines.append(f"- Run with `MAX_STEPS={t.get('max_steps', '?')}`" +
                  (f" and `DISCOVER_OPTIONS=\"{options}\"`" if options else "") +
@@ -155,10 +170,11 @@ def main():
     with open(summary) as f:
         table = list(csv.DictReader(f))
     lines = ["# Measured benchmarks\n",
-             "Made by `benchmarks/real.sh DATA_ROOT`: discovery on public measured records, scored on their "
-             "official test records as the literature scores them. Each folder's README gives the ladder, the "
+             "Made by `benchmarks/real.sh DATA_ROOT`: discovery on public measured records and, where a "
+             "benchmark has one, its physical law written by hand as a user's effect (a grey box; the lower "
+             "estimation error is scored), both on their official test records as the literature scores them. Each folder's README gives the ladder, the "
              "test RMSE beside a linear anchor and the published best; `summary.csv` has one row per benchmark "
-             "and test record. What the runs show, and why the goals are not met yet: "
+             "and test record. What the runs show, and why a goal is not met where it is not: "
              "[docs/discovery.md](../../docs/discovery.md#measured-benchmarks).\n",
              "| benchmark | test | model | RMSE | published best |", "| :-- | :-- | :-- | --: | --: |"]
     for r in table:

@@ -21,7 +21,7 @@ do for [ext in "svg png pdf"] {
   if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
   if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "correlation.".ext
-  set multiplot layout 2, 1 title "Residual tests — Model saturation,arx,offset against test.csv" noenhanced
+  set multiplot layout 2, 1 title "Residual tests — Model cascaded_tanks,offset against test.csv" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
   set yrange [-1:1]
   set xrange [0.5:25.5]
@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.3991377425:0.3991377425]
+  set yrange [-0.4320272158:0.4320272158]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

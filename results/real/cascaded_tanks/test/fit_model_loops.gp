@@ -30,7 +30,7 @@ do for [ext in "svg png pdf"] {
   if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
   if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "fit_model_loops.".ext
-  set multiplot layout rows, cols title "Best fit of model on Model saturation,arx,offset against test.csv: u–y loops" noenhanced \
+  set multiplot layout rows, cols title "Best fit of model on Model cascaded_tanks,offset against test.csv: u–y loops" noenhanced \
       margins char 9, char 2, char 3.5, char 3.5 spacing char 7, char 2
   do for [i=1:panels] {
     set label 1 segment[i] at graph 0.04, graph 0.9 left front boxed noenhanced

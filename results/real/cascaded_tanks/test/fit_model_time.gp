@@ -26,12 +26,12 @@ do for [ext in "svg png pdf"] {
   set size 1, 0.62
   set tmargin 4
   set bmargin 0.5
-  set title "Best fit of model on Model saturation,arx,offset against test.csv" noenhanced offset 0, 1.2
+  set title "Best fit of model on Model cascaded_tanks,offset against test.csv" noenhanced offset 0, 1.2
   set offsets 0, 0, graph 0.05, graph 0.05
   set format x ""
   unset xlabel
   set ylabel output_label
-  set ytics 2, 2, 10.34147267
+  set ytics 4, 2, 10
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
   plot "fit_model_time.dat" using 1:2:3 with filledcurves fc rgb "#b4b4b4" notitle, \
        "fit_model_time.dat" using 1:2 with lines lw 4 lc rgb "#b4b4b4" title "measured (range per bin)", \
@@ -48,8 +48,8 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-2.89257081:2.89257081]
-  set ytics -2, 2, 2
+  set yrange [-0.9036014835:0.9036014835]
+  set ytics -0.5, 0.5, 0.5
   plot "fit_model_time.dat" using 1:6:7 with filledcurves fc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:6 with lines lw 1 lc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:7 with lines lw 1 lc rgb "#D55E00" notitle

@@ -10,7 +10,7 @@
 set encoding utf8
 residual_label = "Residual y − ŷ [V]"
 sigma = 0.01548022478  # noise floor estimate
-set title "Residual — Model saturation,arx,offset against test.csv" noenhanced
+set title "Residual — Model cascaded_tanks,offset against test.csv" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
 set grid lt 1 lc rgb "#e0e0e0" lw 1
@@ -18,7 +18,7 @@ set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics -1, 1, 2.678306306
+  set ytics -0.5, 0.5, 0.8366680403
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

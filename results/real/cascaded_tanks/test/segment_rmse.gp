@@ -10,9 +10,9 @@
 set encoding utf8
 rmse_label = "RMSE [V]"
 sigma = 0.01548022478  # noise floor estimate
-set title "Error per segment — Model saturation,arx,offset against test.csv" noenhanced
+set title "Error per segment — Model cascaded_tanks,offset against test.csv" noenhanced
 set ylabel rmse_label
-set yrange [0:0.6267380838]
+set yrange [0:0.3183309595]
 set xrange [-0.6:0.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
@@ -20,7 +20,7 @@ set boxwidth 0.7
 set xtics nomirror noenhanced
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics 0, 0.2, 0.5803130405
+  set ytics 0, 0.1, 0.2947508884
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
