@@ -131,6 +131,27 @@ TEST_F(DiscoveryCli, CompareWritesMetricsReportAndFigures) {
       << short_compare.output;
 }
 
+// On a record the model was not fitted on, every sample is a test sample:
+// the report says so instead of calling them estimation samples.
+TEST_F(DiscoveryCli, CompareOnAnotherRecordCallsItATest) {
+  ASSERT_EQ(run("fit --data " + path("data.csv") + " --model msd --holdout none --out " + path("f") + kQuick).code, 0);
+  fs::copy_file(dir_ / "data.csv", dir_ / "other.csv");
+  const auto report_of = [&](const std::string& data, const std::string& out) {
+    const auto c = run("compare --data " + path(data) + " --fit " + path("f/fit.json") + " --out " + path(out));
+    EXPECT_EQ(c.code, 0) << c.output;
+    std::ifstream file(dir_ / out / "report.md");
+    return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  };
+  const std::string own = report_of("data.csv", "own"), other = report_of("other.csv", "other");
+  const std::string test_sentence = "The model was fitted on another record: every number is a test score.";
+  EXPECT_NE(own.find("| estimation | "), std::string::npos) << own;
+  EXPECT_NE(own.find("every number is on estimation data"), std::string::npos) << own;
+  EXPECT_EQ(own.find(test_sentence), std::string::npos) << own;
+  EXPECT_NE(other.find("| test | "), std::string::npos) << other;
+  EXPECT_NE(other.find(test_sentence), std::string::npos) << other;
+  EXPECT_EQ(other.find("estimation"), std::string::npos) << other;
+}
+
 TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
   const auto d = run("diagnose --data " + path("data.csv") + " --model msd --out " + path("d") +
                      " --candidates offset,drift,delay" + kQuick);

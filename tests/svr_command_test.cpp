@@ -113,6 +113,16 @@ TEST(SvrCommand, PerSignalTableOnAShortGeneratedRecord) {
   EXPECT_TRUE(test_support::contains(table, "SVR ARMSE (um)")) << table;
   for (const char* file : {"aic.csv", "table.tex", "table.csv", "loop_5-Hz.gp", "loop_20-Hz.csv", "relative_error.gp"})
     EXPECT_TRUE(fs::exists(dir.path() / "out1" / file)) << file;
+
+  // The model file does not name its training record, so compare cannot
+  // call the numbers estimation or test numbers, and says so.
+  const auto c = test_support::hystbench("compare --data " + (dir.path() / "test.csv").string() + " --fit " +
+                                         (dir.path() / "out1" / "svr_model.json").string() + " --out " +
+                                         (dir.path() / "compare").string());
+  ASSERT_EQ(c.code, 0) << c.output;
+  const std::string report = test_support::read(dir.path() / "compare" / "report.md");
+  EXPECT_TRUE(test_support::contains(report, "| not held out | ")) << report;
+  EXPECT_TRUE(test_support::contains(report, "the model file does not name the record it was fitted on")) << report;
 }
 
 }  // namespace

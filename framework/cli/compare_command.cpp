@@ -59,7 +59,7 @@ void report(const CompareOptions& o, const DataSource& source, const ModelData& 
       model_text + " on " + o.data.data +
           (o.periods > 1 ? " (periodic steady state, last of " + std::to_string(o.periods) + " periods)"
                          : held_start_text(fit, data, source)),
-      o.mat);
+      o.mat, fitted_on(fit, source) ? ComparisonInput::Record::Fitted : ComparisonInput::Record::Other);
 }
 
 void compare(const CompareOptions& o, const CLI::App& cmd) {

@@ -21,8 +21,10 @@ void write_comparison_mat(const std::string& mat, const ComparisonInput& input) 
 
 Comparison write_and_print_comparison(const std::filesystem::path& dir, const DataSource& source,
                                       const ModelData& data, Eigen::VectorXd y_model, const std::string& model_text,
-                                      const std::string& model_line, const std::string& mat) {
-  const auto input = comparison_input(data, std::move(y_model), source.u_unit, source.y_unit);
+                                      const std::string& model_line, const std::string& mat,
+                                      ComparisonInput::Record record) {
+  auto input = comparison_input(data, std::move(y_model), source.u_unit, source.y_unit);
+  input.record = record;
   const Comparison metrics = compare_signals(input);
   // First: a MAT file that cannot be written leaves nothing else behind.
   if (!mat.empty()) write_comparison_mat(mat, input);

@@ -38,14 +38,10 @@ void DataOptions::take_start(HoldoutSpec& spec, const HoldoutSpec& fit) const {
     spec.held_start = fit.held_start;
 }
 
-namespace {
-
-bool same_file(const std::string& a, const std::string& b) {
+bool fitted_on(const FitRecord& fit, const DataSource& source) {
   std::error_code ec;
-  return std::filesystem::equivalent(a, b, ec);
+  return std::filesystem::equivalent(source.path, fit.data.path, ec);
 }
-
-}  // namespace
 
 ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
                        HoldoutSpec::Mode elsewhere) {
@@ -60,7 +56,7 @@ ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& s
   HoldoutSpec holdout;
   if (holdout_given)
     holdout = o.holdout_spec();
-  else if (same_file(source.path, fit.data.path))
+  else if (fitted_on(fit, source))
     holdout = fit.holdout;
   else
     holdout.mode = elsewhere;

@@ -35,6 +35,10 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout = true);
 ModelData data_for_fit(const DataOptions& o, const FitRecord& fit, DataSource& source, bool holdout_given,
                        HoldoutSpec::Mode elsewhere);
 
+// Whether `source` is the file the fit was made on (false when that file is
+// gone or was named by a path that no longer leads to it).
+bool fitted_on(const FitRecord& fit, const DataSource& source);
+
 struct FitCliOptions {
   FitOptions fit;  // the library's defaults are the command line's
   std::string optimizer_params = "{}";

@@ -32,7 +32,7 @@ Comparison compare_svr_model(const nlohmann::json& file, const std::string& path
   return write_and_print_comparison(dir, source, model_data, model.simulate(m.u, m.y), model.describe(),
                                     model.describe() + " on " + data.data + " (free run from the first " +
                                         std::to_string(model.lags().warmup()) + " measured samples)",
-                                    mat);
+                                    mat, ComparisonInput::Record::Unknown);
 }
 
 }  // namespace hystbench::cli

@@ -26,7 +26,20 @@ struct ComparisonInput {
   // Index in the record of the first sample compared (the warm-up's length):
   // advice that names a sample count (--warmup) counts from the record's start.
   Eigen::Index first_sample = 0;
+  // What the samples not held out are to the model: it was fitted on them,
+  // on another record (they are test samples), or the model file does not
+  // say (an SVR model file does not name its training record).
+  enum class Record { Fitted, Other, Unknown } record = Record::Fitted;
 };
+
+// What the report and figures call the samples not held out.
+inline const char* estimation_name(const ComparisonInput& in) {
+  switch (in.record) {
+    case ComparisonInput::Record::Other: return "test";
+    case ComparisonInput::Record::Unknown: return "not held out";
+    default: return "estimation";
+  }
+}
 
 // The error metrics of the parts of the record.
 struct PartMetrics {

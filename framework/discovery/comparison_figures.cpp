@@ -173,7 +173,7 @@ fs::path segment_figure(const fs::path& dir, const ComparisonInput& in, const Co
   const double sigma = m.noise_floor.sigma;
   std::string body = "  plot ";
   const char* parts[] = {"estimation", "heldout", "mixed"};
-  const char* names[] = {"estimation", "held out", "mixed"};
+  const char* names[] = {estimation_name(in), "held out", "mixed"};
   bool first = true;
   for (int p = 0; p < 3; ++p) {
     if (!seen[p] && !(p == 0 && segs.empty())) continue;

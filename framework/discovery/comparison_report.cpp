@@ -43,6 +43,17 @@ std::string ratio_to_sigma(double rmse, const Comparison& m) {
 
 // ---- sections ------------------------------------------------------------------
 
+// Which record the numbers are on, where the headline's rows do not say it.
+std::string record_sentence(const ComparisonInput& in, const Comparison& m) {
+  using Record = ComparisonInput::Record;
+  if (in.record == Record::Other) return "The model was fitted on another record: every number is a test score.\n";
+  if (m.parts.heldout) return "";
+  if (in.record == Record::Unknown)
+    return "No samples were held out, and the model file does not name the record it was fitted on: these "
+           "are estimation numbers if it was this one, test scores otherwise.\n";
+  return "No samples were held out: every number is on estimation data.\n";
+}
+
 std::string headline(const ComparisonInput& in, const Comparison& m) {
   const std::string yu = unit(in.y_unit);
   std::string out =
@@ -52,7 +63,7 @@ std::string headline(const ComparisonInput& in, const Comparison& m) {
     out += row({name, count(p.n), num(p.rmse), num(p.fit_percent), num(p.relative_error),
                 num(p.max_abs_error), num(p.mean_error), ratio_to_sigma(p.rmse, m)});
   };
-  part("estimation", m.parts.estimation);
+  part(estimation_name(in), m.parts.estimation);
   if (m.parts.heldout) part("held out", *m.parts.heldout);
   part("all", m.parts.all);
   out +=
@@ -60,9 +71,7 @@ std::string headline(const ComparisonInput& in, const Comparison& m) {
       "Errors in units of y" +
       (in.y_unit.empty() ? std::string() : " (" + in.y_unit + ")") +
       ". The model output ŷ is taken as given (normally simulated over the whole record).\n";
-  if (!m.parts.heldout)
-    out += "No samples were held out: every number is on estimation data.\n";
-  return out + "\n";
+  return out + record_sentence(in, m) + "\n";
 }
 
 std::string noise_floor(const ComparisonInput& in, const Comparison& m) {
@@ -122,8 +131,8 @@ std::string correlation_verdict(const Comparison& m, double ts) {
   const ResidualAnalysis& r = m.residual;
   const LjungBox& lb = r.ljung_box;
   std::string out =
-      "## Residual tests\n\nComputed on the residual e = y − ŷ of the whole record "
-      "(estimation and held-out samples together), N = " +
+      "## Residual tests\n\nComputed on the residual e = y − ŷ of the whole record" +
+      std::string(m.parts.heldout ? " (estimation and held-out samples together)" : "") + ", N = " +
       count(m.n) + ".\n\n";
   const int acf_out = r.acf.outside;
   if (r.white)
@@ -192,7 +201,8 @@ std::string segment_table(const ComparisonInput& in, const Comparison& m) {
   for (std::size_t k = 0; k < shown; ++k) {
     const SegmentErrors& s = segs[k];
     const ErrorMetrics& e = s.metrics;
-    out += row({s.segment, s.part == "heldout" ? "held out" : s.part, count(e.n),
+    const std::string part = s.part == "heldout" ? "held out" : s.part == "estimation" ? estimation_name(in) : s.part;
+    out += row({s.segment, part, count(e.n),
                 num(e.rmse), num(e.fit_percent), num(e.max_abs_error), ratio_to_sigma(e.rmse, m)});
   }
   return out + "\n";

@@ -11,7 +11,7 @@ set encoding utf8
 acf_bound = 0.01935859228
 ccf_bound = 0.01935859228
 set grid lt 1 lc rgb "#e0e0e0" lw 1
-set key top right opaque samplen 2
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set ylabel "Correlation"
 set xtics 5
 set mxtics 5

@@ -26,9 +26,9 @@ set autoscale fix
 set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06
 
 do for [ext in "svg png pdf"] {
-  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
-  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
-  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "fit_model_loops.".ext
   set multiplot layout rows, cols title "Best fit of model on Model svr_hammerstein(m = 4, n = 4, ARX 5/5) against test.csv: u–y loops (first 9 of 16 segments)" noenhanced \
       margins char 9, char 2, char 3.5, char 3.5 spacing char 7, char 2

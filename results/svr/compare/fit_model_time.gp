@@ -1,6 +1,6 @@
 # fit_model_time.gp: measured and model output over time (top), residual (bottom)
 #
-# Reads fit_model.csv (t,u,y_measured,y_model,residual[,segment]).
+# Reads fit_model_time.dat (400 bins of samples: t, then min and max of y, model, residual).
 # To re-render after editing, run inside this folder:
 #     gnuplot fit_model_time.gp
 # It writes fit_model_time.svg, fit_model_time.png and fit_model_time.pdf: the plot commands
@@ -12,11 +12,11 @@ output_label = "Output y [µm]"
 residual_label = "Residual\n" . "y − ŷ [µm]"
 
 do for [ext in "svg png pdf"] {
-  if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
-  if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
-  if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
+  if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }
+  if (ext eq "png") { set terminal pngcairo size 900,760 font "Helvetica,11" }
+  if (ext eq "pdf") { set terminal pdfcairo size 6in,5in font "Helvetica,10" }
   set output "fit_model_time.".ext
-  set datafile separator comma
+  set datafile separator whitespace
   set multiplot
   set yrange [*:*]
   set autoscale fix
@@ -64,8 +64,11 @@ do for [ext in "svg png pdf"] {
   set ylabel output_label
   set ytics 0, 5, 17.48786398
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
-  plot "fit_model.csv" skip 1 using 1:3 with lines lw 4 lc rgb "#b4b4b4" title "measured", \
-       "fit_model.csv" skip 1 using 1:4 with lines lw 1 lc rgb "#0072B2" title "model"
+  plot "fit_model_time.dat" using 1:2:3 with filledcurves fc rgb "#b4b4b4" notitle, \
+       "fit_model_time.dat" using 1:2 with lines lw 4 lc rgb "#b4b4b4" title "measured (range per bin)", \
+       "fit_model_time.dat" using 1:3 with lines lw 4 lc rgb "#b4b4b4" notitle, \
+       "fit_model_time.dat" using 1:4 with lines lw 1 lc rgb "#0072B2" title "model", \
+       "fit_model_time.dat" using 1:5 with lines lw 1 lc rgb "#0072B2" notitle
   unset label
   unset title
   unset key
@@ -78,7 +81,9 @@ do for [ext in "svg png pdf"] {
   set ylabel residual_label
   set yrange [-2.343915956:2.343915956]
   set ytics -2, 2, 2
-  plot "fit_model.csv" skip 1 using 1:5 with lines lw 1 lc rgb "#D55E00" notitle
+  plot "fit_model_time.dat" using 1:6:7 with filledcurves fc rgb "#D55E00" notitle, \
+       "fit_model_time.dat" using 1:6 with lines lw 1 lc rgb "#D55E00" notitle, \
+       "fit_model_time.dat" using 1:7 with lines lw 1 lc rgb "#D55E00" notitle
   unset multiplot
   unset arrow
 }

@@ -10,15 +10,15 @@
 set encoding utf8
 residual_label = "Residual y − ŷ [µm]"
 sigma = 0.05812538791  # noise floor estimate
-set title "Residual — Model svr_hammerstein(m = 4, n = 4, ARX 5/5) against test.csv" noenhanced offset 0, 1.2
+set title "Residual — Model svr_hammerstein(m = 4, n = 4, ARX 5/5) against test.csv" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
 set grid lt 1 lc rgb "#e0e0e0" lw 1
 set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
-set tmargin 4
-set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
+  set ytics -2, 1, 2.170292552
 set arrow from 5, graph 0 to 5, graph 1 nohead lc rgb "#909090" dt 2 back
 set arrow from 6, graph 0 to 6, graph 1 nohead lc rgb "#909090" dt 2 back
 set arrow from 6.5, graph 0 to 6.5, graph 1 nohead lc rgb "#909090" dt 2 back

@@ -12,23 +12,22 @@ rmse_label = "RMSE [µm]"
 sigma = 0.05812538791  # noise floor estimate
 set title "Error per segment — Model svr_hammerstein(m = 4, n = 4, ARX 5/5) against test.csv" noenhanced
 set ylabel rmse_label
-set yrange [0:*]
+set yrange [0:1.032106036]
 set xrange [-0.6:15.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
 # Many segments: names upright, ending at their bar, so none leaves the page.
 set xtics nomirror noenhanced rotate by 90 right
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
-set title offset 0, 1.2
-set tmargin 4
-set key at graph 0, graph 1.01 left bottom horizontal samplen 2
+set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
+  set ytics 0, 0.2, 0.9556537372
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
   if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
   if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
   set output "segment_rmse.".ext
-  plot "segment_rmse.dat" using 1:(strcol(4) eq "estimation" ? $3 : NaN):xtic(2) with boxes fc rgb "#0072B2" title "estimation", \
+  plot "segment_rmse.dat" using 1:(strcol(4) eq "estimation" ? $3 : NaN):xtic(2) with boxes fc rgb "#0072B2" title "not held out", \
        sigma with lines dt 2 lw 2 lc rgb "#000000" title "noise σ"
 }
 unset output

@@ -27,7 +27,7 @@ do for [ext in "svg png pdf"] {
   if (ext eq "png") { set terminal pngcairo size 900,560 font "Helvetica,11" }
   if (ext eq "pdf") { set terminal pdfcairo size 6in,3.75in font "Helvetica,10" }
   set output "segment_rmse.".ext
-  plot "segment_rmse.dat" using 1:(strcol(4) eq "estimation" ? $3 : NaN):xtic(2) with boxes fc rgb "#0072B2" title "estimation", \
+  plot "segment_rmse.dat" using 1:(strcol(4) eq "estimation" ? $3 : NaN):xtic(2) with boxes fc rgb "#0072B2" title "test", \
        sigma with lines dt 2 lw 2 lc rgb "#000000" title "noise σ"
 }
 unset output
