@@ -65,7 +65,7 @@ def rows_of(out, name):
         rmse = load(metrics_path)["all"]["rmse"] * spec["factor"]
         best, source = spec["published"].get(test, (None, ""))
         rows.append({"benchmark": name, "test": test, "model": model, "rmse": rmse, "unit": spec["unit"],
-                     "warmup": warmup_of(fit), "published_best": best, "published_source": source})
+                     "warmup": int(t.get("score_warmup", warmup_of(fit))), "published_best": best, "published_source": source})
     return rows, t
 
 
@@ -73,6 +73,18 @@ def warmup_of(fit):
     """The warm-up a fit was made with: its hold-out text has "+warmup:N" (then "+held" for a held start)."""
     holdout = fit.get("holdout", "")
     return int(holdout.split("warmup:")[1].split("+")[0]) if "warmup:" in holdout else 0
+
+
+def warmup_sentences(t, rows):
+    """How long the fits warm up, and why, when the first ladder advised longer than the benchmark's own."""
+    score = rows[0]["warmup"] if rows else "?"
+    if "first_discover_seconds" not in t:
+        return f"with a warm-up of {score} samples (simulated, never fitted or scored)", ""
+    return (f"with a warm-up of {t['fit_warmup']} samples (simulated, never fitted)",
+            f" The fits warm up longer than the {score} samples the test records are scored after: a first "
+            f"`discover` with {score} ([discover_first/ladder.md](discover_first/ladder.md), "
+            f"{t['first_discover_seconds']} s) found a start-up transient dominating its error and advised "
+            f"{t['fit_warmup']}, and discover ran again with that.")
 
 
 def simulated_from(directory, t):
@@ -107,11 +119,11 @@ def benchmark_readme(out, name, rows, t):
     directory = os.path.join(out, name)
     ladder = load(os.path.join(directory, "discover", "ladder.json"))
     unit = spec["unit"]
+    fits, why = warmup_sentences(t, rows)
     lines = [f"# {spec['title']}\n",
-             "Made by `benchmarks/real.sh`. `discover` from `msd` on `estimation.csv` only, with a warm-up of "
-             f"{rows[0]['warmup'] if rows else '?'} samples (simulated, never fitted or scored), then `compare` "
-             f"of the scored fit on each test record, {simulated_from(directory, t)}. RMSE after the warm-up, the "
-             "benchmark's own way.\n",
+             f"Made by `benchmarks/real.sh`. `discover` from `msd` on `estimation.csv` only, {fits}, then `compare` "
+             f"of the scored fit on each test record, {simulated_from(directory, t)}. RMSE after the benchmark's "
+             f"warm-up, its own way.{why}\n",
              f"- Ladder: [discover/ladder.md](discover/ladder.md); final model `{ladder['final_model']}`, "
              f"complete: {'yes' if ladder['complete'] else 'no'} ({ladder['completeness']['kind']}).",
              f"- Scored fit: `{t['scored_fit']}` (model `{rows[0]['model'] if rows else '?'}`)."]

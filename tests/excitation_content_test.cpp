@@ -127,6 +127,45 @@ TEST(StartupTransient, AnErrorInTheFirstPeriodAfterARestIsNamedWithItsWarmUp) {
   EXPECT_FALSE(find_startup_transient(Eigen::VectorXd::Constant(Eigen::Index(u.size()), 0.01), c).dominates);
 }
 
+TEST(StartupTransient, TheAdvisedWarmUpWaitsForARingingErrorToSettle) {
+  std::vector<double> u;
+  hold(u, 0.0, 1.0);
+  sine(u, 2.0, 50.0, 5.0);  // periods of 500 samples from about sample 1000
+  const ExcitationContent c = of(u);
+  ASSERT_FALSE(c.parts.empty());
+  const Eigen::Index start = c.parts.front().begin;
+  // A resonance that rings on for four periods past the first, at 20 Hz and
+  // decaying by e every 400 samples, over a floor of 0.01: its envelope
+  // falls below twice the floor's block RMS (2 * 0.01) about 400 * ln(0.5 /
+  // 0.02) = 1288 samples after the part's start.
+  Eigen::VectorXd e = Eigen::VectorXd::Constant(Eigen::Index(u.size()), 0.01);
+  for (Eigen::Index k = start; k < start + 2500; ++k) {
+    const double s = double(k - start);
+    e(k) += 0.5 * std::exp(-s / 400.0) * std::sin(2 * M_PI * 20.0 * s * kTs);
+  }
+  const StartupTransient t = find_startup_transient(e, c);
+  EXPECT_TRUE(t.dominates);
+  EXPECT_EQ(t.first_period_end, start + 500);
+  EXPECT_GT(t.warmup, start + 1000);
+  EXPECT_LT(t.warmup, start + 1600);
+  EXPECT_NE(t.sentence().find("--warmup " + std::to_string(t.warmup) + " (where the error"), std::string::npos)
+      << t.sentence();
+  // A first part whose error never falls (a model wrong there, not a
+  // transient) advises its first period, not the whole part.
+  std::vector<double> two;
+  hold(two, 0.0, 1.0);
+  sine(two, 2.0, 50.0, 1.5);
+  hold(two, 0.0, 1.0);
+  sine(two, 2.0, 50.0, 4.0);
+  const ExcitationContent c2 = of(two);
+  ASSERT_EQ(c2.parts.size(), 2u);
+  Eigen::VectorXd e2 = Eigen::VectorXd::Constant(Eigen::Index(two.size()), 0.01);
+  e2.segment(c2.parts[0].begin, c2.parts[0].end - c2.parts[0].begin).setConstant(0.2);
+  const StartupTransient wrong = find_startup_transient(e2, c2);
+  EXPECT_EQ(wrong.warmup, wrong.first_period_end);
+  EXPECT_EQ(wrong.warmup, c2.parts[0].begin + 500);
+}
+
 TEST(StartupTransient, ARecordThatStartsAtALevelTheModelMissesIsNamedWithTheHeldStart) {
   std::vector<double> u;
   sine(u, 0.5, 50.0, 5.0);  // 2.5 periods of 2 000 samples: the periodic rule cannot single out the start

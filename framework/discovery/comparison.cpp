@@ -151,6 +151,7 @@ Comparison compare_signals(const ComparisonInput& in) {
   c.excitation = describe_excitation(in.u, in.segment, c.sample_time, in.u_unit);
   c.startup = find_startup_transient(e, c.excitation);
   c.startup.warmup += in.first_sample;
+  c.startup.first_period_end += in.first_sample;
   return c;
 }
 

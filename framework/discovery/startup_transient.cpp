@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "framework/core/text.hpp"
 #include "framework/io/json_number.hpp"
@@ -22,6 +23,37 @@ void mark_start_level(StartupTransient& t, const Eigen::VectorXd& e) {
   t.starts_away = t.start_ratio >= kStartLevelRatio && std::abs(e.head(k).mean()) >= 0.8 * first;
 }
 
+// The median RMS of the record's blocks of `block` samples: the level the
+// error settles to, which the transient's own large blocks barely move.
+double typical_block_rms(const Eigen::VectorXd& e, Eigen::Index block) {
+  std::vector<double> rms;
+  for (Eigen::Index b = 0; b + block <= e.size(); b += block)
+    rms.push_back(std::sqrt(e.segment(b, block).squaredNorm() / double(block)));
+  if (rms.empty()) return 0;
+  auto mid = rms.begin() + std::ptrdiff_t(rms.size() / 2);
+  std::nth_element(rms.begin(), mid, rms.end());
+  return *mid;
+}
+
+// Where the first excited part's error has fallen to the record's level and
+// stays there for kSettledBlocks blocks (a ringing error crosses zero, so one
+// quiet block proves nothing). A lightly damped resonance started at rest
+// rings for as long as its decay takes, which may be many excitation periods:
+// Silverbox's estimation record, caught mid-motion, rings for about 130
+// samples, so a warm-up of one period leaves most of the transient in the
+// fit. Never before `floor` (the end of the first period), and `floor` when
+// the part never settles (then its error is no transient to skip).
+Eigen::Index settled_at(const Eigen::VectorXd& e, const ExcitedPart& p, Eigen::Index period, Eigen::Index floor) {
+  const Eigen::Index block = std::max<Eigen::Index>(8, period / 2);
+  const double level = kSettledRatio * typical_block_rms(e, block);
+  Eigen::Index quiet = 0;
+  for (Eigen::Index b = floor; b + block <= p.end; b += block) {
+    quiet = std::sqrt(e.segment(b, block).squaredNorm() / double(block)) <= level ? quiet + 1 : 0;
+    if (quiet == kSettledBlocks) return b - (kSettledBlocks - 1) * block;
+  }
+  return floor;
+}
+
 }  // namespace
 
 StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation) {
@@ -36,7 +68,10 @@ StartupTransient find_startup_transient(const Eigen::VectorXd& e, const Excitati
     const Eigen::Index end = std::min(p.end, p.begin + period);
     first += e.segment(p.begin, end - p.begin).squaredNorm();
     samples += end - p.begin;
-    if (t.warmup == 0) t.warmup = end;
+    if (t.warmup == 0) {
+      t.first_period_end = end;
+      t.warmup = settled_at(e, p, period, end);
+    }
   }
   t.error_share = first / total;
   t.sample_share = double(samples) / double(e.size());
@@ -59,7 +94,10 @@ std::string StartupTransient::sentence() const {
          format_number("%.1f", 100 * sample_share) +
          " % of the samples. A model started at rest does not follow the actuator until its states "
          "have caught up; no effect cures that. Fit with --warmup " + std::to_string(warmup) +
-         " (the first excited part's first period), or trim the record; a record that starts "
+         " (" + (warmup > first_period_end ? std::string("where the error after the first excited part's start "
+                                                       "falls to the level of the rest of the record")
+                                           : std::string("the first excited part's first period")) +
+         "), or trim the record; a record that starts "
          "away from rest (a level held before it) is started there by --initial-state held.";
 }
 
@@ -68,6 +106,7 @@ nlohmann::json StartupTransient::to_json() const {
           {"error_share", number_or_null(error_share)},
           {"sample_share", number_or_null(sample_share)},
           {"warmup", warmup},
+          {"first_period_end", first_period_end},
           {"starts_away", starts_away},
           {"start_ratio", number_or_null(start_ratio)},
           {"sentence", sentence()}};

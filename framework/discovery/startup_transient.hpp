@@ -27,11 +27,19 @@ inline constexpr double kTransientConcentration = 4.0;
 // samples' error is a level at least this many times the RMSE.
 inline constexpr double kStartLevelRatio = 3.0;
 
+// The transient has settled where a block's RMS error is at most this many
+// times the record's median block RMS, for this many blocks in a row.
+inline constexpr double kSettledRatio = 2.0;
+inline constexpr long kSettledBlocks = 8;
+
 struct StartupTransient {
   bool dominates = false;
   double error_share = 0;   // of the squared error, in the first periods
   double sample_share = 0;  // of the samples
-  Eigen::Index warmup = 0;  // samples up to the end of the first excited part's first period
+  // The advised warm-up: samples up to where the first excited part's error
+  // has settled (kSettledRatio), never before the end of its first period.
+  Eigen::Index warmup = 0;
+  Eigen::Index first_period_end = 0;
   // The first samples' error is a level kStartLevelRatio times the RMSE or
   // more. Advice only: unlike `dominates` it changes no decision.
   bool starts_away = false;

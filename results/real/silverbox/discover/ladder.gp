@@ -22,7 +22,7 @@ set offsets 0.3, 0.3, 0, 0
 set xlabel 'effect added at each step'
 set ylabel "RMSE [V]"
 set title "Discovery from msd" noenhanced
-sigma = 2.695630233e-05
+sigma = 2.713327169e-05
 truth = NaN
 plot 'ladder.csv' using 1:3:xtic(2) with linespoints lw 2 pt 7 title 'estimation', \
      '' using 1:4 with linespoints lw 2 pt 5 title 'held out', \

@@ -9,9 +9,9 @@
 
 set encoding utf8
 bar = 0.36  # bar width; a group is two bars
-current_estimation = 0.009154531087  # current model, estimation RMSE
-current_heldout = 0.008359052418  # current model, held-out RMSE
-sigma = 2.695630233e-05  # noise floor estimate
+current_estimation = 0.009158484061  # current model, estimation RMSE
+current_heldout = 0.008358340723  # current model, held-out RMSE
+sigma = 2.713327169e-05  # noise floor estimate
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,760 font "Helvetica,12" background rgb "white" }

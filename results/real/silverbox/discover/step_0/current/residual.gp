@@ -9,7 +9,7 @@
 
 set encoding utf8
 residual_label = "Residual y − ŷ [V]"
-sigma = 2.695630233e-05  # noise floor estimate
+sigma = 2.713327169e-05  # noise floor estimate
 set title "Residual — Current model msd" noenhanced
 set xlabel "Time t [s]"
 set ylabel residual_label
@@ -18,7 +18,7 @@ set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics -0.05, 0.05, 0.08260433765
+  set ytics -0.05, 0.05, 0.08261946308
 set object rect from 9.9917824, graph 0 to 13.3226496, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 23.3168896, graph 0 to 26.6477568, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder
 set object rect from 36.6419968, graph 0 to 39.972864, graph 1 behind fc rgb "#e6e6e6" fs solid 1.0 noborder

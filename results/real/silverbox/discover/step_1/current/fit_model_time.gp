@@ -48,8 +48,8 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-0.02557532837:0.02557532837]
-  set ytics -0.02, 0.02, 0.02
+  set yrange [-0.01642421818:0.01642421818]
+  set ytics -0.01, 0.01, 0.01
   plot "fit_model_time.dat" using 1:6:7 with filledcurves fc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:6 with lines lw 1 lc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:7 with lines lw 1 lc rgb "#D55E00" notitle

@@ -8,8 +8,8 @@
 # sit once inside the loop over these three formats at the end.
 
 set encoding utf8
-acf_bound = 0.01011865859
-ccf_bound = 0.01011865859
+acf_bound = 0.01012863447
+ccf_bound = 0.01012863447
 set grid lt 1 lc rgb "#e0e0e0" lw 1
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
 set ylabel "Correlation"
@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Current model duffing,offset" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.8279895604:0.8279895604]
+  set yrange [-0.7344309432:0.7344309432]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.1109072374:0.1109072374]
+  set yrange [-0.1720313953:0.1720313953]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

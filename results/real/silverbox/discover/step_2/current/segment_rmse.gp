@@ -9,10 +9,10 @@
 
 set encoding utf8
 rmse_label = "RMSE [V]"
-sigma = 2.695630233e-05  # noise floor estimate
+sigma = 2.713327169e-05  # noise floor estimate
 set title "Error per segment — Current model duffing,offset" noenhanced
 set ylabel rmse_label
-set yrange [0:0.0003963167026]
+set yrange [0:0.0002571755133]
 set xrange [-0.6:0.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
@@ -20,7 +20,7 @@ set boxwidth 0.7
 set xtics nomirror noenhanced
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics 0, 0.0001, 0.0003669599098
+  set ytics 0, 5e-05, 0.0002381254753
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }
