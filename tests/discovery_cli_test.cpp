@@ -6,7 +6,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -139,8 +138,7 @@ TEST_F(DiscoveryCli, CompareOnAnotherRecordCallsItATest) {
   const auto report_of = [&](const std::string& data, const std::string& out) {
     const auto c = run("compare --data " + path(data) + " --fit " + path("f/fit.json") + " --out " + path(out));
     EXPECT_EQ(c.code, 0) << c.output;
-    std::ifstream file(dir_ / out / "report.md");
-    return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    return hystbench::test_support::read(dir_ / out / "report.md");
   };
   const std::string own = report_of("data.csv", "own"), other = report_of("other.csv", "other");
   const std::string test_sentence = "The model was fitted on another record: every number is a test score.";
@@ -167,8 +165,7 @@ TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
   EXPECT_NE(d.output.find("verdict: offset"), std::string::npos);
   // The report names the worst branch (its loop once read a destroyed
   // temporary, which AddressSanitizer caught).
-  std::ifstream report(dir_ / "d" / "report.md");
-  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  const std::string text = hystbench::test_support::read(dir_ / "d" / "report.md");
   EXPECT_NE(text.find("- worst branch: "), std::string::npos) << text;
 
   const auto l = run("discover --data " + path("data.csv") + " --start msd --out " + path("l") +
