@@ -8,8 +8,9 @@
 #                 ladder says a start-up transient dominates its error and
 #                 advises a longer warm-up, it is kept as discover_first/ and
 #                 discover runs again with the advised warm-up, as a user
-#                 would; every fit below uses it, the test records are
-#                 still scored after the benchmark's own warm-up
+#                 would (not on a held start); every fit below uses it, the
+#                 test records are still scored after the benchmark's own
+#                 warm-up
 #   proposals/    where the ladder ends beyond the catalog: propose given the
 #                 discover folder (its sound rung: the last before a doubtful
 #                 addition); proposals/effect/ holds the first term as a plugin
@@ -143,8 +144,10 @@ discover_from_msd() {
 
 # The warm-up the ladder in DIR advises when a start-up transient dominated
 # its error and the advice exceeds W (docs/discovery.md, "Start-up
-# transient"); empty otherwise.
+# transients"); empty otherwise, and on a held start, whose warm-up outputs
+# set the level: a long warm-up would average a moving stretch.
 advised_warmup() {
+  [[ ${initial[$b]} == held ]] && return 0
   python3 -c 'import json, sys
 s = json.load(open(sys.argv[1]))["startup_transient"]
 print(s["warmup"] if s["dominates"] and s["warmup"] > int(sys.argv[2]) else "")' "$1/ladder.json" "$2"

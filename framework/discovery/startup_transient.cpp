@@ -41,15 +41,20 @@ double typical_block_rms(const Eigen::VectorXd& e, Eigen::Index block) {
 // rings for as long as its decay takes, which may be many excitation periods:
 // Silverbox's estimation record, caught mid-motion, rings for about 130
 // samples, so a warm-up of one period leaves most of the transient in the
-// fit. Never before `floor` (the end of the first period), and `floor` when
-// the part never settles (then its error is no transient to skip).
+// fit. Never before `floor` (the end of the first period). An error that
+// settles only in the part's second half, or not at all, is no start-up
+// transient to skip (the model is wrong there, or the part is too short to
+// tell), and then the answer is `floor`.
 Eigen::Index settled_at(const Eigen::VectorXd& e, const ExcitedPart& p, Eigen::Index period, Eigen::Index floor) {
   const Eigen::Index block = std::max<Eigen::Index>(8, period / 2);
+  const Eigen::Index latest = p.begin + (p.end - p.begin) / 2;
   const double level = kSettledRatio * typical_block_rms(e, block);
   Eigen::Index quiet = 0;
   for (Eigen::Index b = floor; b + block <= p.end; b += block) {
     quiet = std::sqrt(e.segment(b, block).squaredNorm() / double(block)) <= level ? quiet + 1 : 0;
-    if (quiet == kSettledBlocks) return b - (kSettledBlocks - 1) * block;
+    const Eigen::Index start = b - std::max<Eigen::Index>(quiet - 1, 0) * block;
+    if (start > latest) break;
+    if (quiet == kSettledBlocks) return start;
   }
   return floor;
 }

@@ -30,14 +30,15 @@ inline constexpr double kStartLevelRatio = 3.0;
 // The transient has settled where a block's RMS error is at most this many
 // times the record's median block RMS, for this many blocks in a row.
 inline constexpr double kSettledRatio = 2.0;
-inline constexpr long kSettledBlocks = 8;
+inline constexpr Eigen::Index kSettledBlocks = 8;
 
 struct StartupTransient {
   bool dominates = false;
   double error_share = 0;   // of the squared error, in the first periods
   double sample_share = 0;  // of the samples
   // The advised warm-up: samples up to where the first excited part's error
-  // has settled (kSettledRatio), never before the end of its first period.
+  // has settled (kSettledRatio) within the part's first half; otherwise, and
+  // never earlier than, the end of its first period.
   Eigen::Index warmup = 0;
   Eigen::Index first_period_end = 0;
   // The first samples' error is a level kStartLevelRatio times the RMSE or
