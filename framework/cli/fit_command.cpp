@@ -7,6 +7,7 @@
 #include "framework/cli/model_options.hpp"
 #include "framework/discovery/fit_errors.hpp"
 #include "framework/discovery/fit_record.hpp"
+#include "framework/discovery/model_comparison.hpp"
 #include "framework/harness/progress.hpp"
 #include "framework/harness/status_line.hpp"
 #include "framework/io/atomic_file.hpp"
@@ -21,6 +22,16 @@ struct FitCommandOptions {
   std::string model;
   InputHold input_hold = InputHold::Spline;
 };
+
+// A fit decided by a start-up transient is worth fitting again with the
+// warm-up that removes it. compare, diagnose and discover say so in their
+// reports; fit, where a user starts, has only its console.
+void print_startup_transient(const FitResult& result, const ModelData& data) {
+  Eigen::VectorXd y;
+  if (!result.model.simulate(result.x, data, y)) return;
+  const StartupTransient t = startup_transient(data, y);
+  if (t.dominates) std::cout << t.sentence() << "\n";
+}
 
 void fit(FitCommandOptions& o) {
   DataSource source = o.data.source();
@@ -47,6 +58,7 @@ void fit(FitCommandOptions& o) {
   write_file_atomic(dir / "fit.json", record.to_json().dump(2) + "\n");
   print_parameters(record);
   print_errors(fit_errors(result.model, result.x, data), source.y_unit);
+  print_startup_transient(result, data);
   std::cout << "wrote " << (dir / "fit.json").string() << "\n";
 }
 

@@ -149,9 +149,7 @@ Comparison compare_signals(const ComparisonInput& in) {
   c.signatures = effect_signatures(
       {in.t, in.u, in.y_model, e, in.segment, c.sample_time, r.ccf, r.lowest_excitation_hz});
   c.excitation = describe_excitation(in.u, in.segment, c.sample_time, in.u_unit);
-  c.startup = find_startup_transient(e, c.excitation);
-  c.startup.warmup += in.first_sample;
-  c.startup.first_period_end += in.first_sample;
+  c.startup = find_startup_transient(e, c.excitation, in.first_sample);
   return c;
 }
 

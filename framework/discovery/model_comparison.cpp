@@ -19,4 +19,12 @@ ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
   return in;
 }
 
+StartupTransient startup_transient(const ModelData& data, const Eigen::VectorXd& y_model) {
+  const Eigen::Index w = data.warmup, n = data.size() - w;
+  std::vector<std::string> segment;
+  if (!data.segment.empty()) segment.assign(data.segment.begin() + w, data.segment.end());
+  const ExcitationContent c = describe_excitation(data.u.tail(n) * data.scales.u, segment, data.sample_time, "");
+  return find_startup_transient(data.y.tail(n) - y_model.tail(n), c, w);
+}
+
 }  // namespace hystbench

@@ -13,4 +13,9 @@ namespace hystbench {
 ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
                                  const std::string& u_unit, const std::string& y_unit);
 
+// The start-up transient of a model output on its own data, alone: what
+// `fit` says without the whole comparison (startup_transient.hpp). `y_model`
+// in the units of data.y (normalised), over the whole record.
+StartupTransient startup_transient(const ModelData& data, const Eigen::VectorXd& y_model);
+
 }  // namespace hystbench

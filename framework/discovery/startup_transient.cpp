@@ -61,21 +61,25 @@ Eigen::Index settled_at(const Eigen::VectorXd& e, const ExcitedPart& p, Eigen::I
 
 }  // namespace
 
-StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation) {
+StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation,
+                                        Eigen::Index first_sample) {
   StartupTransient t;
+  t.warmup = t.first_period_end = first_sample;
   const double total = e.squaredNorm();
   if (!(total > 0) || !std::isfinite(total) || excitation.parts.empty()) return t;  // a diverged model has no transient to name
   double first = 0;
   Eigen::Index samples = 0;
+  bool first_part = true;
   for (const auto& p : excitation.parts) {
     if (!(p.frequency_hz > 0)) continue;
     const auto period = Eigen::Index(std::ceil(1.0 / (p.frequency_hz * excitation.sample_time)));
     const Eigen::Index end = std::min(p.end, p.begin + period);
     first += e.segment(p.begin, end - p.begin).squaredNorm();
     samples += end - p.begin;
-    if (t.warmup == 0) {
-      t.first_period_end = end;
-      t.warmup = settled_at(e, p, period, end);
+    if (first_part) {
+      t.first_period_end = first_sample + end;
+      t.warmup = first_sample + settled_at(e, p, period, end);
+      first_part = false;
     }
   }
   t.error_share = first / total;

@@ -52,7 +52,10 @@ struct StartupTransient {
   nlohmann::json to_json() const;
 };
 
-// `e`: the residual of the compared samples; `excitation` of the same samples.
-StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation);
+// `e`: the residual of the compared samples; `excitation` of the same
+// samples; `first_sample`: where in the record they start (the warm-up's
+// length), so that the advice counts from the record's start.
+StartupTransient find_startup_transient(const Eigen::VectorXd& e, const ExcitationContent& excitation,
+                                        Eigen::Index first_sample = 0);
 
 }  // namespace hystbench
