@@ -20,11 +20,9 @@ ComparisonInput comparison_input(const ModelData& data, Eigen::VectorXd y_model,
 }
 
 StartupTransient startup_transient(const ModelData& data, const Eigen::VectorXd& y_model) {
-  const Eigen::Index w = data.warmup, n = data.size() - w;
-  std::vector<std::string> segment;
-  if (!data.segment.empty()) segment.assign(data.segment.begin() + w, data.segment.end());
-  const ExcitationContent c = describe_excitation(data.u.tail(n) * data.scales.u, segment, data.sample_time, "");
-  return find_startup_transient(data.y.tail(n) - y_model.tail(n), c, w);
+  const ComparisonInput in = comparison_input(data, y_model * data.scales.y, "", "");
+  const ExcitationContent c = describe_excitation(in.u, in.segment, in.sample_time, in.u_unit);
+  return find_startup_transient(in.y - in.y_model, c, in.first_sample);
 }
 
 }  // namespace hystbench

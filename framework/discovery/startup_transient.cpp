@@ -6,6 +6,7 @@
 
 #include "framework/core/text.hpp"
 #include "framework/io/json_number.hpp"
+#include "framework/stats/descriptive.hpp"
 
 namespace hystbench {
 
@@ -29,10 +30,7 @@ double typical_block_rms(const Eigen::VectorXd& e, Eigen::Index block) {
   std::vector<double> rms;
   for (Eigen::Index b = 0; b + block <= e.size(); b += block)
     rms.push_back(std::sqrt(e.segment(b, block).squaredNorm() / double(block)));
-  if (rms.empty()) return 0;
-  auto mid = rms.begin() + std::ptrdiff_t(rms.size() / 2);
-  std::nth_element(rms.begin(), mid, rms.end());
-  return *mid;
+  return rms.empty() ? 0.0 : stats::median(rms);
 }
 
 // Where the first excited part's error has fallen to the record's level and
