@@ -87,6 +87,21 @@ def warmup_sentences(t, rows):
             f"{t['fit_warmup']}, and discover ran again with that.")
 
 
+def transient_left(directory, t):
+    """What the scored ladder still says of a start-up transient, and why the script did not follow it."""
+    s = load(os.path.join(directory, "discover", "ladder.json"))["startup_transient"]
+    if not s["dominates"]:
+        return ""
+    advice = f"a start-up transient dominates its error and advises `--warmup {s['warmup']}`"
+    if load(os.path.join(directory, t["scored_fit"])).get("holdout", "").endswith("+held"):
+        return (f" Its ladder says {advice}; the script does not follow that on a held start, whose warm-up "
+                f"outputs set the level (a long warm-up would average a moving stretch into it).")
+    if "first_discover_seconds" in t:
+        return (f" The second ladder still says {advice}: the script follows the advice once, so the scored "
+                f"fit keeps what is left of the transient; fit again with that warm-up by hand.")
+    return f" Its ladder says {advice}, no longer than the {t.get('fit_warmup', '?')} samples used, which stay."
+
+
 def discover_seconds(t):
     """Both discover runs where the first ladder's advice made the script run it again."""
     first = t.get("first_discover_seconds")
@@ -129,7 +144,7 @@ def benchmark_readme(out, name, rows, t):
     lines = [f"# {spec['title']}\n",
              f"Made by `benchmarks/real.sh`. `discover` from `msd` on `estimation.csv` only, {fits}, then `compare` "
              f"of the scored fit on each test record, {simulated_from(directory, t)}. RMSE after the benchmark's "
-             f"warm-up, its own way.{why}\n",
+             f"warm-up, its own way.{why}{transient_left(directory, t)}\n",
              f"- Ladder: [discover/ladder.md](discover/ladder.md); final model `{ladder['final_model']}`, "
              f"complete: {'yes' if ladder['complete'] else 'no'} ({ladder['completeness']['kind']}).",
              f"- Scored fit: `{t['scored_fit']}` (model `{rows[0]['model'] if rows else '?'}`)."]

@@ -30,7 +30,7 @@ BUILD_DIR="$build_dir" MAX_STEPS=1 \
   > "$work/real.log" 2>&1 || fail "benchmarks/real.sh failed: $(tail -20 "$work/real.log")"
 
 python3 - "$work/real" "$source_dir/tests/data/real" <<'PY'
-import csv, math, os, sys
+import csv, json, math, os, sys
 out, data = sys.argv[1], sys.argv[2]
 def fail(msg):
     sys.exit("FAIL: " + msg)
@@ -86,6 +86,12 @@ if lower == "grey_box" and models["cascaded_tanks"] != "cascaded_tanks,offset":
     fail("cascaded_tanks: summary model " + models["cascaded_tanks"])
 if "Grey box:" not in open(os.path.join(out, "cascaded_tanks", "README.md")).read():
     fail("cascaded_tanks/README.md does not describe the grey box")
+# The README says whether the ladder the fits come from still has a start-up
+# transient dominating its error, and only then.
+for b in ("silverbox", "cascaded_tanks"):
+    left = json.load(open(os.path.join(out, b, "discover", "ladder.json")))["startup_transient"]["dominates"]
+    if left != ("a start-up transient dominates its error" in open(os.path.join(out, b, "README.md")).read()):
+        fail(f"{b}/README.md and discover/ladder.json disagree on a start-up transient left (ladder: {left})")
 print("real benchmarks:", [(r["benchmark"], r["test"], r["model"], r["rmse"]) for r in rows])
 PY
 
@@ -128,7 +134,11 @@ if f"warmup:{s['warmup']}" not in holdout:
 rows = list(csv.DictReader(open(os.path.join(os.path.dirname(d), "summary.csv"))))
 if len(rows) != 3 or any(r["warmup"] != "50" for r in rows):
     fail("test records not scored after the benchmark's 50 samples: " + str(rows))
-if f"advised {s['warmup']}" not in open(os.path.join(d, "README.md")).read():
+readme = open(os.path.join(d, "README.md")).read()
+if f"advised {s['warmup']}" not in readme:
     fail("README does not say which warm-up the fits used and why")
+left = json.load(open(os.path.join(d, "discover", "ladder.json")))["startup_transient"]
+if left["dominates"] != ("The second ladder still says a start-up transient dominates" in readme):
+    fail("README and the second ladder disagree on a start-up transient left: " + str(left))
 print("ringing start: advised warm-up", s["warmup"], "followed")
 PY
