@@ -25,14 +25,7 @@
 #     operator whose width grows with the drive rate: propose says that no
 #     term of its library expresses what is missing, and why.
 # benchmarks/beyond_catalog.sh runs the same at full size.
-set -euo pipefail
-build_dir=$1
-source_dir=$2
-core_flags=${3:-}
-core_compiler=${4:-c++}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh"
 
 hystbench="$build_dir/hystbench"
 planted="$build_dir/tests/hystbench_planted_data"
@@ -46,10 +39,7 @@ cd "$work"
 # Builds the generated effect of proposal folder $1 against the build tree and
 # checks its batched form in the model $2.
 build_effect() {
-  cmake -S "$1/effect" -B "$1/effect/build" -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build_dir" \
-        -DCMAKE_CXX_COMPILER="$core_compiler" -DCMAKE_CXX_FLAGS="$core_flags" \
-        -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
-  cmake --build "$1/effect/build" >/dev/null
+  build_plugin "$1/effect" "$1/effect/build" -Dhystbench_DIR="$build_dir"
   [[ -f "$1/effect/build/proposed_term.so" ]] || fail "the effect proposed in $1 did not build"
   # Batched like the catalog's effects, and equal to its one-candidate values.
   "$build_dir/tests/hystbench_lane_check" "$1/effect/build/proposed_term.so" "$2" ||

@@ -6,34 +6,17 @@
 # neutral at k = 0, simulated, named by `diagnose` as what a model without it
 # is missing (and not named when nothing is missing), added by `discover`,
 # which then stops and recovers k and tau.
-set -euo pipefail
-build_dir=$1
-source_dir=$2
-# The core's compiler flags (a sanitizer build's -fsanitize=...) and compiler
-# (clang for ThreadSanitizer), so that the plugin is built, linked and checked
-# like the core: two sanitizer runtimes cannot share a process.
-core_flags=${3:-}
-core_compiler=${4:-c++}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh"
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
-cmake -S "$source_dir/examples/thermal_drift_effect" -B "$work/plugin" \
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_COMPILER="$core_compiler" \
-      -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
-cmake --build "$work/plugin" >/dev/null
+build_plugin "$source_dir/examples/thermal_drift_effect" "$work/plugin" -DCMAKE_PREFIX_PATH="$work/prefix"
 
 hystbench="$work/prefix/bin/hystbench"
 plugin="$work/plugin/thermal_drift.so"
 [[ -f "$plugin" ]] || fail "the example did not build $plugin"
 
 # The same example builds against the build tree, without installing.
-cmake -S "$source_dir/examples/thermal_drift_effect" -B "$work/plugin_from_build" \
-      -DCMAKE_BUILD_TYPE=Release -Dhystbench_DIR="$build_dir" -DCMAKE_CXX_COMPILER="$core_compiler" \
-      -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" >/dev/null
-cmake --build "$work/plugin_from_build" >/dev/null
+build_plugin "$source_dir/examples/thermal_drift_effect" "$work/plugin_from_build" -Dhystbench_DIR="$build_dir"
 "$build_dir/hystbench" list effects --plugin "$work/plugin_from_build/thermal_drift.so" \
   > "$work/list_from_build.txt"
 grep -q "^  thermal_drift \[nonlinearity\]" "$work/list_from_build.txt" ||
