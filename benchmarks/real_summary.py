@@ -88,18 +88,18 @@ def warmup_sentences(t, rows):
 
 
 def transient_left(directory, t):
-    """What the scored ladder still says of a start-up transient, and why the script did not follow it."""
+    """What discover's ladder (the one the fits start from) still says of a start-up transient, and why
+    the script did not follow it. The advice is always longer than the warm-up used when the transient
+    dominates (docs/discovery.md, "Start-up transients")."""
     s = load(os.path.join(directory, "discover", "ladder.json"))["startup_transient"]
     if not s["dominates"]:
         return ""
     advice = f"a start-up transient dominates its error and advises `--warmup {s['warmup']}`"
-    if load(os.path.join(directory, t["scored_fit"])).get("holdout", "").endswith("+held"):
+    if load(os.path.join(directory, "discover", "fit.json")).get("holdout", "").endswith("+held"):
         return (f" Its ladder says {advice}; the script does not follow that on a held start, whose warm-up "
                 f"outputs set the level (a long warm-up would average a moving stretch into it).")
-    if "first_discover_seconds" in t:
-        return (f" The second ladder still says {advice}: the script follows the advice once, so the scored "
-                f"fit keeps what is left of the transient; fit again with that warm-up by hand.")
-    return f" Its ladder says {advice}, no longer than the {t.get('fit_warmup', '?')} samples used, which stay."
+    return (f" The second ladder still says {advice}: the script follows the advice once, so the scored "
+            f"fit keeps what is left of the transient; fit again with that warm-up by hand.")
 
 
 def discover_seconds(t):

@@ -25,7 +25,7 @@
 #     operator whose width grows with the drive rate: propose says that no
 #     term of its library expresses what is missing, and why.
 # benchmarks/beyond_catalog.sh runs the same at full size.
-source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh" || exit 1
 
 hystbench="$build_dir/hystbench"
 planted="$build_dir/tests/hystbench_planted_data"

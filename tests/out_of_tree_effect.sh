@@ -6,7 +6,7 @@
 # neutral at k = 0, simulated, named by `diagnose` as what a model without it
 # is missing (and not named when nothing is missing), added by `discover`,
 # which then stops and recovers k and tau.
-source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh" || exit 1
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 build_plugin "$source_dir/examples/thermal_drift_effect" "$work/plugin" -DCMAKE_PREFIX_PATH="$work/prefix"

@@ -3,7 +3,7 @@
 # examples/ against that installed copy with find_package(hystbench), and
 # runs it through `--plugin` with the installed command; then builds it
 # against the build tree (-Dhystbench_DIR) and lists it with that command.
-source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh" || exit 1
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
 build_plugin "$source_dir/examples/random_search_plugin" "$work/plugin" -DCMAKE_PREFIX_PATH="$work/prefix"

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the test scripts that build a plugin out of the tree. Their
 # arguments: BUILD_DIR SOURCE_DIR [CORE_FLAGS] [CORE_COMPILER]. The core's
 # compiler flags (a sanitizer build's -fsanitize=...) and compiler (clang
@@ -16,9 +17,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # compiler and flags; further arguments go to cmake (where hystbench is:
 # -DCMAKE_PREFIX_PATH=... or -Dhystbench_DIR=...).
 build_plugin() {
-  local source=$1 build=$2
+  local src=$1 build=$2
   shift 2
-  cmake -S "$source" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$core_compiler" \
+  cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$core_compiler" \
         -DCMAKE_CXX_FLAGS="$core_flags" -DCMAKE_MODULE_LINKER_FLAGS="$core_flags" "$@" >/dev/null
   cmake --build "$build" >/dev/null
 }
