@@ -24,12 +24,15 @@ void mark_start_level(StartupTransient& t, const Eigen::VectorXd& e) {
   t.starts_away = t.start_ratio >= kStartLevelRatio && std::abs(e.head(k).mean()) >= 0.8 * first;
 }
 
+double block_rms(const Eigen::VectorXd& e, Eigen::Index begin, Eigen::Index block) {
+  return std::sqrt(e.segment(begin, block).squaredNorm() / double(block));
+}
+
 // The median RMS of the record's blocks of `block` samples: the level the
 // error settles to, which the transient's own large blocks barely move.
 double typical_block_rms(const Eigen::VectorXd& e, Eigen::Index block) {
   std::vector<double> rms;
-  for (Eigen::Index b = 0; b + block <= e.size(); b += block)
-    rms.push_back(std::sqrt(e.segment(b, block).squaredNorm() / double(block)));
+  for (Eigen::Index b = 0; b + block <= e.size(); b += block) rms.push_back(block_rms(e, b, block));
   return rms.empty() ? 0.0 : stats::median(rms);
 }
 
@@ -49,7 +52,7 @@ Eigen::Index settled_at(const Eigen::VectorXd& e, const ExcitedPart& p, Eigen::I
   const double level = kSettledRatio * typical_block_rms(e, block);
   Eigen::Index quiet = 0;
   for (Eigen::Index b = floor; b + block <= p.end; b += block) {
-    quiet = std::sqrt(e.segment(b, block).squaredNorm() / double(block)) <= level ? quiet + 1 : 0;
+    quiet = block_rms(e, b, block) <= level ? quiet + 1 : 0;
     const Eigen::Index start = b - std::max<Eigen::Index>(quiet - 1, 0) * block;
     if (start > latest) break;
     if (quiet == kSettledBlocks) return start;
