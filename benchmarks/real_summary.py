@@ -135,6 +135,17 @@ def grey_box_line(t, spec):
             f"test records take no part in the choice.")
 
 
+def hold_line(t, spec):
+    """How the scored model's two fresh fits, under the spline and the band-limited input hold, held out."""
+    spline, band = (spec["factor"] * float(t[f"heldout_rmse_{h}"]) for h in ("spline", "bandlimited"))
+    chosen = "the band-limited one is scored" if t["scored_fit"].startswith("hold_bandlimited/") else \
+        "the band-limited one does not hold out lower, so it is not scored"
+    return (f"- Input between samples: the model to score fitted afresh with the spline and with "
+            f"`--input-hold bandlimited` ([docs/models.md](../../../docs/models.md#streaming-models), \"Input hold\") "
+            f"holds out {spline:.4g} and {band:.4g} {spec['unit']} on the estimation record ({t['hold_seconds']} s); "
+            f"{chosen}.")
+
+
 def benchmark_readme(out, name, rows, t):
     spec = BENCHMARKS[name]
     directory = os.path.join(out, name)
@@ -160,6 +171,8 @@ def benchmark_readme(out, name, rows, t):
     if "grey_box" in t:
         lines.append(grey_box_line(t, spec))
     options = t.get("discover_options", "")
+    if "heldout_rmse_spline" in t:
+        lines.append(hold_line(t, spec))
     lines.append(f"- Run with `MAX_STEPS={t.get('max_steps', '?')}`" +
                  (f" and `DISCOVER_OPTIONS=\"{options}\"`" if options else "") +
                  f"; time on 2 cores: discover {discover_seconds(t)} s, proposal and its ladder "

@@ -59,10 +59,14 @@ TEST(EffectLanes, ChunkBoundariesDoNotChangeAValue) {
 TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
   for (const char* effects : {"feedback_hysteresis", "hysteresis,asymmetry,feedback_hysteresis,arx", "duffing",
                               "asymmetry,duffing,offset"})
-    for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh})
+    for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh, InputHold::Bandlimited})
       expect_bit_identical(effects, 600, hold);
   expect_bit_identical("feedback_hysteresis", 600, InputHold::Spline, 3);
-  for (int samples : {1, 2, 3, 4}) expect_bit_identical("feedback_hysteresis", samples);
+  expect_bit_identical("feedback_hysteresis", 600, InputHold::Bandlimited, 3);
+  for (int samples : {1, 2, 3, 4}) {
+    expect_bit_identical("feedback_hysteresis", samples);
+    expect_bit_identical("feedback_hysteresis", samples, InputHold::Bandlimited);
+  }
 }
 
 // Fixed blocks for the oscillator's other paths: lanes in groups of one

@@ -224,7 +224,7 @@ TEST(InputHold, NamesRoundTripAndAnUnknownNameListsTheValidOnes) {
     parse_input_hold("cubic", "--input-hold");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "--input-hold: unknown input hold 'cubic'; valid: spline, linear, zoh");
+    EXPECT_EQ(std::string(e.what()), "--input-hold: unknown input hold 'cubic'; valid: spline, linear, zoh, bandlimited");
   }
   EXPECT_EQ(Model::parse("msd").input_hold(), InputHold::Spline) << "the offline default";
   Model m = Model::parse("msd");
@@ -234,9 +234,10 @@ TEST(InputHold, NamesRoundTripAndAnUnknownNameListsTheValidOnes) {
 }
 
 // Error of each hold against the same oscillator driven by a 10× finer
-// record of the same multisine: the spline, kept as the offline default,
-// is the most accurate, zero-order hold the least.
-TEST(InputHold, SplineIsMostAccurateOfflineAndZeroOrderHoldLeast) {
+// record of the same multisine (up to 0.15 of the sample rate): the
+// band-limited hold is the most accurate, then the spline (the offline
+// default), zero-order hold the least.
+TEST(InputHold, BandLimitedIsMostAccurateOfflineAndZeroOrderHoldLeast) {
   const double ts = 1e-3;
   const int fine = 10;
   const Eigen::Index n = 3000;
@@ -260,7 +261,7 @@ TEST(InputHold, SplineIsMostAccurateOfflineAndZeroOrderHoldLeast) {
   Eigen::VectorXd reference;
   ASSERT_TRUE(batch(model, x, data(multisine(n * fine, ts / fine), ts / fine), InputHold::Spline, reference));
   std::vector<double> error;
-  for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh}) {
+  for (InputHold hold : {InputHold::Spline, InputHold::Linear, InputHold::Zoh, InputHold::Bandlimited}) {
     Eigen::VectorXd y;
     ASSERT_TRUE(batch(model, x, data(multisine(n, ts), ts), hold, y));
     double sse = 0.0, power = 0.0;
@@ -271,6 +272,7 @@ TEST(InputHold, SplineIsMostAccurateOfflineAndZeroOrderHoldLeast) {
     error.push_back(std::sqrt(sse / power));
     std::cout << "[ hold     ] " << to_string(hold) << ": relative RMS error " << error.back() << "\n";
   }
+  EXPECT_LT(error[3], error[0]);
   EXPECT_LT(error[0], error[1]);
   EXPECT_LT(error[1], error[2]);
 }

@@ -74,12 +74,14 @@ void run_discover(DiscoverCommandOptions& o) {
   const HoldoutSpec holdout = o.data.holdout_spec();
   Model start = Model::parse(o.start, "--start");
   start.set_substeps(o.fit.substeps);
+  start.set_input_hold(o.fit.input_hold);
   const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, start);
   DiscoverOptions options;
   options.diagnose = o.diagnose.diagnose_options(o.fit.fit_options(), source);
   options.max_steps = o.max_steps;
   options.refit_restarts = o.refit_restarts;
   options.substeps = o.fit.substeps;
+  options.input_hold = o.fit.input_hold;
   nlohmann::json context_options = first_step_options(start, options.diagnose, o.fit.substeps);
   context_options["max_steps"] = o.max_steps;
   context_options["refit_restarts"] = o.refit_restarts;

@@ -3,7 +3,6 @@
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
-#include "framework/cli/input_hold_option.hpp"
 #include "framework/cli/model_options.hpp"
 #include "framework/discovery/fit_errors.hpp"
 #include "framework/discovery/fit_record.hpp"
@@ -20,7 +19,6 @@ struct FitCommandOptions {
   FitCliOptions fit;
   OutputOptions output;
   std::string model;
-  InputHold input_hold = InputHold::Spline;
 };
 
 // A fit decided by a start-up transient is worth fitting again with the
@@ -39,7 +37,7 @@ void fit(FitCommandOptions& o) {
   const HoldoutSpec holdout = o.data.holdout_spec();
   Model model = Model::parse(o.model);
   model.set_substeps(o.fit.substeps);
-  model.set_input_hold(o.input_hold);
+  model.set_input_hold(o.fit.input_hold);
   const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, model);
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
@@ -75,9 +73,6 @@ Action add_fit_command(CLI::App& app) {
                   "(`hystbench list effects` lists them)")
       ->required();
   add_fit_options(cmd, o->fit);
-  // fit.json records a hold other than the spline, so compare and diagnose
-  // --fit simulate the model as it was fitted.
-  cli::add_input_hold_option(cmd, o->input_hold, "the model then streams exactly as fitted");
   add_output_options(cmd, o->output);
   add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);

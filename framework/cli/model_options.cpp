@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "framework/cli/commands.hpp"
+#include "framework/cli/input_hold_option.hpp"
 #include "framework/cli/number_range.hpp"
 #include "framework/cli/threads_option.hpp"
 #include "framework/core/error.hpp"
@@ -132,6 +133,7 @@ void add_fit_options(CLI::App* cmd, FitCliOptions& o) {
   cmd->add_option("--substeps", o.substeps,
                   "integration sub-steps per sample of ODE effects (0: each effect's default)")
       ->capture_default_str()->check(number_range(0, 1000, kSubstepsHint));
+  add_input_hold_option(cmd, o.input_hold, "the model then streams exactly as fitted");
 }
 
 DiagnoseOptions DiagnoseCliOptions::diagnose_options(FitOptions fit, const DataSource& source) const {

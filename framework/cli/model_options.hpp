@@ -10,6 +10,7 @@
 #include "framework/discovery/diagnosis.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_fit.hpp"
+#include "framework/model/input_hold.hpp"
 
 namespace hystbench::cli {
 
@@ -43,6 +44,9 @@ struct FitCliOptions {
   FitOptions fit;  // the library's defaults are the command line's
   std::string optimizer_params = "{}";
   int substeps = 0;
+  // fit.json records a hold other than the spline, so compare and diagnose
+  // --fit simulate the model as it was fitted.
+  InputHold input_hold = InputHold::Spline;
   // Validated (bad optimizer, parameters or local method -> InputError).
   FitOptions fit_options() const;
 };

@@ -25,6 +25,7 @@
 
 #include "framework/discovery/diagnosis.hpp"
 #include "framework/discovery/pruning.hpp"
+#include "framework/model/input_hold.hpp"
 
 namespace hystbench {
 
@@ -66,6 +67,7 @@ struct DiscoverOptions {
   // `refit_restarts` global restarts of the extended model compete with it.
   int refit_restarts = 1;
   int substeps = 0;  // of every model of the ladder (0: each effect's default)
+  InputHold input_hold = InputHold::Spline;  // of every model of the ladder
 };
 
 // Called after every diagnosis with the ladder so far (its last step and

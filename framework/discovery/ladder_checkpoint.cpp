@@ -28,6 +28,7 @@ Eigen::VectorXd vector_of(const nlohmann::json& j, const Model& model, const std
 Model model_of(const nlohmann::json& j, const DiscoverOptions& o, const std::string& where) {
   Model m = Model::parse(j.get<std::string>(), where);
   m.set_substeps(o.substeps);  // a model text does not carry them
+  m.set_input_hold(o.input_hold);
   return m;
 }
 

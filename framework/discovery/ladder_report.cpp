@@ -297,7 +297,11 @@ std::filesystem::path write_first_step(const std::filesystem::path& dir, const D
 }
 
 nlohmann::json first_step_options(const Model& start, const DiagnoseOptions& o, int substeps) {
-  return {{"start", start.text()}, {"fit", o.fit.to_json()}, {"diagnose", o.to_json()}, {"substeps", substeps}};
+  nlohmann::json j = {
+      {"start", start.text()}, {"fit", o.fit.to_json()}, {"diagnose", o.to_json()}, {"substeps", substeps}};
+  // Written only when not the default, so that earlier checkpoints still match.
+  if (start.input_hold() != InputHold::Spline) j["input_hold"] = to_string(start.input_hold());
+  return j;
 }
 
 nlohmann::json first_step_context(const LadderContext& ctx) {

@@ -5,10 +5,15 @@
 // simulation (Model::simulate) and by the sample-by-sample stream
 // (StreamingModel) alike:
 //
-//   spline  a not-a-knot cubic spline through the whole record. The closest
-//           to a band-limited input (exact for cubics), so the default for
-//           offline fits; but not causal: the value between samples k and
-//           k+1 depends on every sample of the record, later ones included.
+//   spline  a not-a-knot cubic spline through the whole record: exact for
+//           cubics, the default for offline fits; but not causal: the value
+//           between samples k and k+1 depends on every sample of the record,
+//           later ones included.
+//   bandlimited
+//           a windowed sinc over 24 neighbouring samples
+//           (band_limited_interpolation.hpp): what a band-limited input is
+//           between its samples, closer than the spline where the input
+//           reaches towards the Nyquist frequency. Not causal either.
 //   linear  straight lines between samples: the value on [k, k+1] depends on
 //           samples k and k+1 only. Causal; the stream's default.
 //   zoh     the input held at sample k until sample k+1 (zero-order hold, as
@@ -19,9 +24,9 @@
 
 namespace hystbench {
 
-enum class InputHold { Spline, Linear, Zoh };
+enum class InputHold { Spline, Linear, Zoh, Bandlimited };
 
-// "spline", "linear", "zoh".
+// "spline", "linear", "zoh", "bandlimited".
 std::string to_string(InputHold hold);
 // The inverse; throws InputError naming `where` and the valid names.
 InputHold parse_input_hold(const std::string& text, const std::string& where);
@@ -30,7 +35,8 @@ InputHold parse_input_hold(const std::string& text, const std::string& where);
 bool is_causal(InputHold hold);
 
 // Input at fraction s in [0, 1] of the interval from sample value w0 to w1
-// under a causal hold (linear or zoh; the spline needs the whole record).
+// under a causal hold (linear or zoh; the spline and the band-limited hold
+// need the whole record).
 inline double held_value(InputHold hold, double w0, double w1, double s) {
   return hold == InputHold::Zoh ? w0 : w0 + s * (w1 - w0);
 }

@@ -18,8 +18,9 @@
 // up to ten times a fixed count, beyond which the parameters fail), the
 // input reconstructed between samples by the model's input hold
 // (input_hold.hpp): by default a not-a-knot cubic spline through the record,
-// the most accurate offline; linear or zero-order hold in a stream, where
-// output k may depend on inputs up to k only. For a law whose force has
+// or a windowed sinc (band-limited) for an input that reaches towards the
+// Nyquist frequency; linear or zero-order hold in a stream, where output k
+// may depend on inputs up to k only. For a law whose force has
 // kinks (|y'|, |z|), a step in which the velocity or z changes sign is split
 // at the crossing. The state starts at rest (y = y' = z = 0) and output 0 is
 // 0; output k + 1 is the state after the interval from sample k to k + 1.
@@ -42,6 +43,7 @@
 #include <vector>
 
 #include "framework/core/scratch_pool.hpp"
+#include "framework/model/band_limited_interpolation.hpp"
 #include "framework/model/effect.hpp"
 #include "framework/model/input_hold.hpp"
 #include "framework/model/input_interpolation.hpp"
@@ -99,7 +101,7 @@ class Oscillator : public Effect {
 
   std::unique_ptr<EffectStepper> stepper(std::span<const double> p, const StepContext& ctx) const override {
     Coefficients c;
-    if (!is_causal(ctx.hold)) return nullptr;  // the spline needs the whole record
+    if (!is_causal(ctx.hold)) return nullptr;  // the spline and the sinc need the whole record
     return stepper_for(setup(p, ctx.sample_time, ctx.substeps, c), [&] {
       return kernel_stepper<Stream>(
           [c, hold = ctx.hold](Stream& st, double w, double) { return sample(c, hold, st, w); });
@@ -236,33 +238,61 @@ class Oscillator : public Effect {
 
   // One candidate's whole record, in place; false when it diverged.
   static bool run_record(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
-    return hold == InputHold::Spline ? run_spline(c, signal) : run_held(c, hold, signal);
+    return is_causal(hold) ? run_held(c, hold, signal) : run_whole_record(c, hold, signal);
   }
 
-  // Batch form with the spline through the whole record (not causal).
-  static bool run_spline(const Coefficients& c, Eigen::Ref<Eigen::VectorXd> signal) {
-    const int sub = c.sub;
-    thread_local UniformCubicSpline spline;
-    thread_local std::vector<UniformCubicSpline::Weights> weights;
+  // An interpolant's weights at the fractions j/(2 sub) that advance() reads.
+  template <class Weights>
+  static void fraction_weights(int sub, Weights (*of)(double), std::vector<Weights>& weights) {
+    weights.resize(std::size_t(2 * sub + 1));
+    for (int j = 0; j <= 2 * sub; ++j) weights[std::size_t(j)] = of(double(j) / double(2 * sub));
+  }
+
+  // Batch form under a hold through the whole record (not causal): at(k, j)
+  // is the input at fraction j/(2 sub) of the interval from sample k,
+  // between(k, s) at any fraction s.
+  template <class At, class Between>
+  static bool run_whole(const Coefficients& c, Eigen::Ref<Eigen::VectorXd> signal, At at, Between between) {
     thread_local std::vector<double> wv;
-    thread_local int weights_for = 0;
-    spline.fit(signal);
-    if (weights_for != sub) {
-      weights.resize(2 * sub + 1);
-      for (int j = 0; j <= 2 * sub; ++j)
-        weights[j] = UniformCubicSpline::weights(double(j) / double(2 * sub));
-      weights_for = sub;
-    }
-    wv.resize(2 * sub + 1);
+    wv.resize(std::size_t(2 * c.sub + 1));
     State x;
     signal[0] = 0.0;
     for (Eigen::Index k = 0; k + 1 < signal.size(); ++k) {
-      for (int j = 0; j <= 2 * sub; ++j) wv[j] = spline.value(k, weights[j]);
-      advance(c, x, wv.data(), [&](double s) { return spline.value(k, UniformCubicSpline::weights(s)); });
+      for (int j = 0; j <= 2 * c.sub; ++j) wv[std::size_t(j)] = at(k, j);
+      advance(c, x, wv.data(), [&](double s) { return between(k, s); });
       if (diverged(x)) return false;
       signal[k + 1] = x.y;
     }
     return true;
+  }
+
+  // The spline, or under the band-limited hold the windowed sinc where it
+  // reaches (the spline near the ends). The kernel reads samples ahead of
+  // the one being overwritten: it reads a copy of the input.
+  static bool run_whole_record(const Coefficients& c, InputHold hold, Eigen::Ref<Eigen::VectorXd> signal) {
+    thread_local UniformCubicSpline spline;
+    thread_local std::vector<UniformCubicSpline::Weights> weights;
+    thread_local std::vector<double> input;
+    thread_local std::vector<BandLimitedKernel::Weights> kernels;
+    spline.fit(signal);
+    fraction_weights(c.sub, &UniformCubicSpline::weights, weights);
+    const bool sinc = hold == InputHold::Bandlimited;
+    if (sinc) {
+      input.assign(signal.begin(), signal.end());
+      fraction_weights(c.sub, &BandLimitedKernel::weights, kernels);
+    }
+    const std::span<const double> w(input);
+    const auto by_sinc = [&](Eigen::Index k) { return sinc && BandLimitedKernel::reaches(k, w.size()); };
+    return run_whole(
+        c, signal,
+        [&](Eigen::Index k, int j) {
+          return by_sinc(k) ? BandLimitedKernel::value(w, k, kernels[std::size_t(j)])
+                            : spline.value(k, weights[std::size_t(j)]);
+        },
+        [&](Eigen::Index k, double s) {
+          return by_sinc(k) ? BandLimitedKernel::value(w, k, BandLimitedKernel::weights(s))
+                            : spline.value(k, UniformCubicSpline::weights(s));
+        });
   }
 
   // Batch form under a causal hold: the interval from sample k to k + 1 sees
@@ -284,11 +314,11 @@ class Oscillator : public Effect {
   }
 
   // A block of candidates, run over the whole record at once (the spline
-  // hold needs every sample before the first step). Lanes that share a
-  // sub-step count advance together, one group after another, and a lane
-  // whose sub-step has a kink redoes it alone with split_step(); a lane
-  // whose count no other lane has runs the one-candidate form. Either way
-  // every lane is bit for bit what apply() gives its candidate.
+  // and band-limited holds need every sample before the first step). Lanes
+  // that share a sub-step count advance together, one group after another,
+  // and a lane whose sub-step has a kink redoes it alone with split_step();
+  // a lane whose count no other lane has runs the one-candidate form.
+  // Either way every lane is bit for bit what apply() gives its candidate.
   class Block final : public LaneRun {
    public:
     Block(const LaneParams& p, const LaneContext& ctx, LaneMask& ok) : hold_(ctx.hold) {
@@ -344,7 +374,7 @@ class Oscillator : public Effect {
 
     void read_input(std::span<const LaneVector> signal);
     void run_together(std::span<LaneVector> signal);
-    double spline_value(std::span<const LaneVector> input, Eigen::Index k, int l, double s) const;
+    double whole_record_value(std::span<const LaneVector> input, Eigen::Index k, int l, double s) const;
     void fill_inputs(std::span<const LaneVector> input, Eigen::Index k, std::vector<LaneVector>& wv) const;
     void redo_kinks(const StateOf<LaneVector>& x, StateOf<LaneVector>& next, int i, Eigen::Index k,
                     const std::vector<LaneVector>& wv, std::span<const LaneVector> input) const;
@@ -359,6 +389,7 @@ class Oscillator : public Effect {
       std::vector<LaneVector> second;  // the splines' second derivatives
       std::vector<double> super;       // the spline solve's scratch
       std::vector<UniformCubicSpline::Weights> weights;
+      std::vector<BandLimitedKernel::Weights> kernels;
     };
     static ScratchPool<Scratch>& scratch() {
       static ScratchPool<Scratch> pool;
@@ -397,11 +428,12 @@ class Oscillator : public Effect {
   }
 };
 
-// The block's input, and under the spline hold every lane's spline.
+// The block's input, and under the spline and band-limited holds every
+// lane's spline.
 template <class Law>
 void Oscillator<Law>::Block::read_input(std::span<const LaneVector> signal) {
   s_.input.assign(signal.begin(), signal.end());
-  if (hold_ != InputHold::Spline) return;
+  if (is_causal(hold_)) return;
   s_.second.resize(s_.input.size());
   spline_second_derivatives<LaneVector>(s_.input, s_.second, s_.super);
 }
@@ -410,9 +442,8 @@ void Oscillator<Law>::Block::read_input(std::span<const LaneVector> signal) {
 template <class Law>
 void Oscillator<Law>::Block::run_together(std::span<LaneVector> signal) {
   const std::span<const LaneVector> input(s_.input);
-  s_.weights.resize(std::size_t(2 * sub_ + 1));
-  for (int j = 0; j <= 2 * sub_; ++j)
-    s_.weights[std::size_t(j)] = UniformCubicSpline::weights(double(j) / double(2 * sub_));
+  if (!is_causal(hold_)) fraction_weights(sub_, &UniformCubicSpline::weights, s_.weights);
+  if (hold_ == InputHold::Bandlimited) fraction_weights(sub_, &BandLimitedKernel::weights, s_.kernels);
   Rates<LaneVector> r{};
   LaneBits keep{};  // lanes outside the group keep their signal
   for (int l = 0; l < kEffectLanes; ++l) {
@@ -436,10 +467,13 @@ void Oscillator<Law>::Block::run_together(std::span<LaneVector> signal) {
   }
 }
 
-// Lane l's spline at position k + s, as UniformCubicSpline::value computes it.
+// Lane l's input at position k + s under the spline or the band-limited
+// hold, as UniformCubicSpline::value and BandLimitedKernel::value compute it.
 template <class Law>
-double Oscillator<Law>::Block::spline_value(std::span<const LaneVector> input, Eigen::Index k, int l,
-                                               double s) const {
+double Oscillator<Law>::Block::whole_record_value(std::span<const LaneVector> input, Eigen::Index k, int l,
+                                                     double s) const {
+  if (hold_ == InputHold::Bandlimited && BandLimitedKernel::reaches(k, input.size()))
+    return BandLimitedKernel::value(input, k, BandLimitedKernel::weights(s))[l];
   const auto last = Eigen::Index(input.size()) - 1;
   if (k >= last) return input[std::size_t(last)][l];
   const auto i = std::size_t(k);
@@ -448,13 +482,17 @@ double Oscillator<Law>::Block::spline_value(std::span<const LaneVector> input, E
 }
 
 // The input of every lane at the fractions advance() reads, computed as
-// UniformCubicSpline::value and held_value compute them.
+// UniformCubicSpline::value, BandLimitedKernel::value and held_value
+// compute them.
 template <class Law>
 void Oscillator<Law>::Block::fill_inputs(std::span<const LaneVector> input, Eigen::Index k,
                                             std::vector<LaneVector>& wv) const {
   const LaneVector w0 = input[std::size_t(k)], w1 = input[std::size_t(k + 1)];
+  const bool sinc = hold_ == InputHold::Bandlimited && BandLimitedKernel::reaches(k, input.size());
   for (int j = 0; j <= 2 * sub_; ++j) {
-    if (hold_ == InputHold::Spline) {
+    if (sinc) {
+      wv[std::size_t(j)] = BandLimitedKernel::value(input, k, s_.kernels[std::size_t(j)]);
+    } else if (!is_causal(hold_)) {
       wv[std::size_t(j)] = UniformCubicSpline::blend(s_.weights[std::size_t(j)], w0, w1, s_.second[std::size_t(k)],
                                                      s_.second[std::size_t(k + 1)]);
     } else {
@@ -473,7 +511,7 @@ void Oscillator<Law>::Block::redo_kinks(const StateOf<LaneVector>& x, StateOf<La
     const State from{x.y[l], x.v[l], x.z[l]}, to{next.y[l], next.v[l], next.z[l]};
     if (!has_kink(c_[l], from, to)) continue;
     const auto w_at = [&](double s) {
-      if (hold_ == InputHold::Spline) return spline_value(input, k, l, s);
+      if (!is_causal(hold_)) return whole_record_value(input, k, l, s);
       return held_value(hold_, input[std::size_t(k)][l], input[std::size_t(k + 1)][l], s);
     };
     const double w_start = wv[std::size_t(2 * i)][l], w_end = wv[std::size_t(2 * i + 2)][l];

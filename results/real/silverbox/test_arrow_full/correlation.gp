@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Model duffing,offset against test_arrow_full.csv" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.7508601503:0.7508601503]
+  set yrange [-0.7895616538:0.7895616538]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.1213618375:0.1213618375]
+  set yrange [-0.05398447485:0.05398447485]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

@@ -48,7 +48,7 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-0.004904504813:0.004904504813]
+  set yrange [-0.004820704203:0.004820704203]
   set ytics -0.002, 0.002, 0.002
   plot "fit_model_time.dat" using 1:6:7 with filledcurves fc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:6 with lines lw 1 lc rgb "#D55E00" notitle, \

@@ -12,7 +12,7 @@ rmse_label = "RMSE [V]"
 sigma = 3.040758659e-05  # noise floor estimate
 set title "Error per segment — Model duffing,offset against test_arrow_full.csv" noenhanced
 set ylabel rmse_label
-set yrange [0:0.0003290367871]
+set yrange [0:0.0003254989517]
 set xrange [-0.6:0.6]
 set style fill solid 0.85 border rgb "#404040"
 set boxwidth 0.7
@@ -20,7 +20,7 @@ set boxwidth 0.7
 set xtics nomirror noenhanced
 set grid ytics lt 1 lc rgb "#e0e0e0" lw 1
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics 0, 0.0001, 0.0003046636918
+  set ytics 0, 0.0001, 0.0003013879183
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

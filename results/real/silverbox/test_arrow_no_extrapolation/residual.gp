@@ -18,7 +18,7 @@ set autoscale xfix
 # Room above the data for the segment names; the key sits above the frame.
 set offsets 0, 0, graph 0.2, graph 0.05
 set key outside top center horizontal nobox noopaque samplen 2.5 spacing 1.1 width 1
-  set ytics -0.001, 0.001, 0.002192611963
+  set ytics -0.001, 0.001, 0.002178714026
 
 do for [ext in "svg png pdf"] {
   if (ext eq "svg") { set terminal svg size 900,560 font "Helvetica,12" background rgb "white" }

@@ -23,7 +23,7 @@ do for [ext in "svg png pdf"] {
   set output "correlation.".ext
   set multiplot layout 2, 1 title "Residual tests — Model duffing,offset against test_multisine.csv" noenhanced
   set title "Autocorrelation of the residual r_{ee}(τ)"
-  set yrange [-0.7658854443:0.7658854443]
+  set yrange [-0.7992500963:0.7992500963]
   set xrange [0.5:25.5]
   plot "correlation.dat" index 0 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 0 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \
@@ -32,7 +32,7 @@ do for [ext in "svg png pdf"] {
        0 with lines lw 1 lc rgb "#404040" notitle
   set xlabel "Lag τ [samples]  (τ > 0: residual against past input)"
   set title "Cross-correlation of input and residual r_{ue}(τ)"
-  set yrange [-0.1282411233:0.1282411233]
+  set yrange [-0.0734521523:0.0734521523]
   set xrange [-25.5:25.5]
   plot "correlation.dat" index 1 using 1:2 with impulses lw 3 lc rgb "#0072B2" notitle, \
        "" index 1 using 1:2 with points pt 7 ps 0.5 lc rgb "#0072B2" notitle, \

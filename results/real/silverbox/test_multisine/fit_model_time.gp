@@ -31,7 +31,7 @@ do for [ext in "svg png pdf"] {
   set format x ""
   unset xlabel
   set ylabel output_label
-  set ytics -0.2, 0.1, 0.2320563011
+  set ytics -0.2, 0.1, 0.2320440588
   set key at graph 1, graph 1.01 right bottom horizontal samplen 2.5
   plot "fit_model_time.dat" using 1:2:3 with filledcurves fc rgb "#b4b4b4" notitle, \
        "fit_model_time.dat" using 1:2 with lines lw 4 lc rgb "#b4b4b4" title "measured (range per bin)", \
@@ -48,7 +48,7 @@ do for [ext in "svg png pdf"] {
   set format x "% h"
   set xlabel "Time t [s]"
   set ylabel residual_label
-  set yrange [-0.008313151863:0.008313151863]
+  set yrange [-0.008274170266:0.008274170266]
   set ytics -0.005, 0.005, 0.005
   plot "fit_model_time.dat" using 1:6:7 with filledcurves fc rgb "#D55E00" notitle, \
        "fit_model_time.dat" using 1:6 with lines lw 1 lc rgb "#D55E00" notitle, \
