@@ -136,14 +136,15 @@ def grey_box_line(t, spec):
 
 
 def hold_line(t, spec):
-    """How the scored model's two fresh fits, under the spline and the band-limited input hold, held out."""
-    spline, band = (spec["factor"] * float(t[f"heldout_rmse_{h}"]) for h in ("spline", "bandlimited"))
-    chosen = "the band-limited one is scored" if t["scored_fit"].startswith("hold_bandlimited/") else \
-        "the band-limited one does not hold out lower, so it is not scored"
+    """How the model to score held out when fitted afresh under the spline and the band-limited input hold,
+    beside the fit it came from, and whether the band-limited fit replaced that one."""
+    spline, band, found = (spec["factor"] * float(t[f"heldout_rmse_{h}"]) for h in ("spline", "bandlimited", "found"))
+    chosen = "the band-limited fit replaces discovery's fit" if t["hold_fit"].startswith("hold_bandlimited/") else \
+        "discovery's fit stays"
     return (f"- Input between samples: the model to score fitted afresh with the spline and with "
             f"`--input-hold bandlimited` ([docs/models.md](../../../docs/models.md#streaming-models), \"Input hold\") "
-            f"holds out {spline:.4g} and {band:.4g} {spec['unit']} on the estimation record ({t['hold_seconds']} s); "
-            f"{chosen}.")
+            f"holds out {spline:.4g} and {band:.4g} {spec['unit']} on the estimation record, discovery's fit "
+            f"{found:.4g} ({t['hold_seconds']} s); {chosen}.")
 
 
 def benchmark_readme(out, name, rows, t):

@@ -48,9 +48,11 @@ TEST(BandLimitedKernel, GivesTheSampleAtASampleAndKeepsAConstantConstant) {
 }
 
 // A sine at 0.3 of the sample rate, between its samples, away from the
-// record's ends: the sinc finds it to within 2e-5 of its amplitude; the
-// spline misses it by more than a thousand times as much. That gap is why the hold
-// exists (band_limited_interpolation.hpp).
+// record's ends: the sinc finds it to within 2e-5 of its amplitude, at
+// fractions on the kernel's table rows (0.25, 0.5, 0.75) and between them
+// (the oscillator's j/40 and others); the spline misses it by more than a
+// thousand times as much. That gap is why the hold exists
+// (band_limited_interpolation.hpp).
 TEST(BandLimitedKernel, FollowsASineNearTheNyquistFrequencyWhereTheSplineMissesIt) {
   const double f = 0.3;
   const int n = 200;
@@ -59,7 +61,7 @@ TEST(BandLimitedKernel, FollowsASineNearTheNyquistFrequencyWhereTheSplineMissesI
   for (int k = 0; k < n; ++k) samples[k] = w[std::size_t(k)];
   const UniformCubicSpline spline(samples);
   double sinc_error = 0.0, spline_error = 0.0;
-  for (double frac : {0.25, 0.5, 0.75}) {
+  for (double frac : {0.25, 0.5, 0.75, 1.0 / 40.0, 7.0 / 40.0, 0.1234567, 0.9871}) {
     const BandLimitedKernel::Weights c = BandLimitedKernel::weights(frac);
     for (int k = 20; k < n - 20; ++k) {
       const double truth = std::sin(2.0 * kPi * f * (k + frac) + 0.3);

@@ -29,8 +29,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/plugin_script.sh" || exit 1
 
 hystbench="$build_dir/hystbench"
 planted="$build_dir/tests/hystbench_planted_data"
-# Reads the commands' own printed lines and JSON (no python: the test
-# machine has only the C++ toolchain).
+# Reads the commands' own printed lines and JSON with grep, sed and awk.
 below() { awk -v v="$1" -v bound="$2" 'BEGIN { exit !(v + 0 <= bound + 0) }'; }
 noise=0.01
 seed_chain=hysteresis,asymmetry,msd,arx

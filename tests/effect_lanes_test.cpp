@@ -72,9 +72,10 @@ TEST(EffectLanes, TheFeedbackOscillatorGivesExactlyTheOneCandidateValues) {
 // Fixed blocks for the oscillator's other paths: lanes in groups of one
 // sub-step count each (four lanes, two lanes, and a lane stiff enough to need
 // more sub-steps, which runs alone), an invalid lane, and a block whose every
-// lane diverges (the block stops early).
-TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
-  const Model model = Model::parse("feedback_hysteresis");
+// lane diverges (the block stops early); under both holds through the whole record.
+void expect_stiff_invalid_and_diverging_lanes(InputHold hold) {
+  Model model = Model::parse("feedback_hysteresis");
+  model.set_input_hold(hold);
   const ModelData data = lane_record(600);
   const ModelProblem problem(model, data);
   const auto names = model.parameter_names();
@@ -99,10 +100,15 @@ TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
   }
   Eigen::VectorXd f(16);
   problem.evaluate(X, f);
-  for (Eigen::Index j = 0; j < 16; ++j) EXPECT_EQ(f[j], problem.sse(X.col(j))) << "candidate " << j;
+  for (Eigen::Index j = 0; j < 16; ++j)
+    EXPECT_EQ(f[j], problem.sse(X.col(j))) << to_string(hold) << ", candidate " << j;
   EXPECT_TRUE(std::isfinite(f[1]));
   EXPECT_EQ(f[2], std::numeric_limits<double>::infinity());
   for (Eigen::Index j = 8; j < 16; ++j) EXPECT_EQ(f[j], std::numeric_limits<double>::infinity()) << j;
+}
+
+TEST(EffectLanes, TheFeedbackOscillatorsStiffInvalidAndDivergingLanes) {
+  for (InputHold hold : {InputHold::Spline, InputHold::Bandlimited}) expect_stiff_invalid_and_diverging_lanes(hold);
 }
 
 // An output finite but too large to square (here a gain of 1e160) is a

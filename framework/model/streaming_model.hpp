@@ -22,7 +22,8 @@ class StreamingModel final : public SignalStream {
   // The model with parameters `x` at `sample_time`, its ODE effects
   // reconstructing the input with `hold` (the model's own hold is the
   // offline one and is not used). Throws InputError naming `where` when the
-  // hold is not causal: the spline needs samples not yet seen.
+  // hold is not causal: the spline and the band-limited hold need samples
+  // not yet seen.
   StreamingModel(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& x, double sample_time,
                  InputHold hold = InputHold::Linear, const std::string& where = "stream");
   StreamingModel(const StreamingModel& other);
