@@ -326,6 +326,57 @@ TEST_F(DiscoveryCli, AHeldStartTravelsWithTheFitAndNeedsAWarmUp) {
   EXPECT_FALSE(fs::exists(dir_ / "hb" / "fit.json"));
 }
 
+TEST_F(DiscoveryCli, FitFromAFitStartsThereWithItsSetUpAndIsNeverWorse) {
+  const auto a = run("fit --data " + path("data.csv") + " --model msd,offset --warmup 100 --input-hold bandlimited --out " +
+                     path("fa") + kQuick);
+  ASSERT_EQ(a.code, 0) << a.output;
+  const auto start = read_json(dir_ / "fa" / "fit.json");
+  // Its model, warm-up and hold come along; a polish alone may only gain.
+  const auto r = run("fit --data " + path("data.csv") + " --from " + path("fa/fit.json") + " --restarts 0 --out " +
+                     path("fr"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto again = read_json(dir_ / "fr" / "fit.json");
+  EXPECT_EQ(again["model"], "msd,offset");
+  EXPECT_EQ(again["holdout"], "auto+warmup:100");
+  EXPECT_EQ(again["input_hold"], "bandlimited");
+  EXPECT_EQ(again["fit"]["from"], path("fa/fit.json"));
+  EXPECT_LE(again["errors"]["rmse"].get<double>(), start["errors"]["rmse"].get<double>());
+  // What the command line gives wins.
+  const auto s = run("fit --data " + path("data.csv") + " --from " + path("fa/fit.json") +
+                     " --input-hold spline --warmup 50 --restarts 0 --out " + path("fs"));
+  ASSERT_EQ(s.code, 0) << s.output;
+  const auto spline = read_json(dir_ / "fs" / "fit.json");
+  EXPECT_EQ(spline.value("input_hold", "spline"), "spline");
+  EXPECT_EQ(spline["holdout"], "auto+warmup:50");
+  // Another model, or none at all, is refused before anything is written.
+  const auto other = run("fit --data " + path("data.csv") + " --from " + path("fa/fit.json") + " --model msd --out " +
+                         path("fo"));
+  EXPECT_EQ(other.code, 2);
+  EXPECT_NE(other.output.find("--model msd is not the model of --from"), std::string::npos) << other.output;
+  EXPECT_FALSE(fs::exists(dir_ / "fo" / "fit.json"));
+  const auto none = run("fit --data " + path("data.csv") + " --out " + path("fn"));
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.output.find("give --model LIST, or --from FIT.json"), std::string::npos) << none.output;
+  EXPECT_FALSE(fs::exists(dir_ / "fn" / "fit.json"));
+}
+
+// A fit made with coarse sub-steps is diagnosed as it was fitted: without
+// --substeps the diagnosis is the one that names the fit's own count.
+TEST_F(DiscoveryCli, DiagnoseOfAFitKeepsItsSubSteps) {
+  const auto f = run("fit --data " + path("data.csv") + " --model duffing,offset --substeps 1 --out " + path("c") + kQuick);
+  ASSERT_EQ(f.code, 0) << f.output;
+  const auto diagnosed = [&](const std::string& dir, const std::string& extra) {
+    const auto d = run("diagnose --data " + path("data.csv") + " --fit " + path("c/fit.json") +
+                       " --candidates drift --out " + path(dir) + kQuick + extra);
+    EXPECT_EQ(d.code, 0) << d.output;
+    return read_json(dir_ / dir / "diagnosis.json")["candidates"][0]["rmse_before"].get<double>();
+  };
+  const double kept = diagnosed("cd", ""), one = diagnosed("c1", " --substeps 1"),
+               fine = diagnosed("c20", " --substeps 20");
+  EXPECT_EQ(kept, one);
+  EXPECT_NE(kept, fine);
+}
+
 TEST_F(DiscoveryCli, BadInputGetsOneMessageAndExitTwo) {
   auto r = run("fit --data " + path("data.csv") + " --model msd,creeep --out " + path("x"));
   EXPECT_EQ(r.code, 2);

@@ -73,8 +73,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   if (cmd.count("--fit")) start = FitRecord::read(o.from_fit);
   if (start) o.data.take_start(holdout, start->holdout);
   Model model = start ? start->model : Model::parse(o.model);
-  model.set_substeps(o.fit.substeps);
-  if (!start || cmd.count("--input-hold")) model.set_input_hold(o.fit.input_hold);
+  o.fit.set_integration(model, cmd, start.has_value());
   const ModelData data =
       prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
   const auto dir = o.output.prepare("diagnosis.json");

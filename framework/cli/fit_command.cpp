@@ -1,9 +1,11 @@
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "framework/cli/commands.hpp"
 #include "framework/cli/fit_summary.hpp"
 #include "framework/cli/model_options.hpp"
+#include "framework/core/error.hpp"
 #include "framework/discovery/fit_errors.hpp"
 #include "framework/discovery/fit_record.hpp"
 #include "framework/discovery/model_comparison.hpp"
@@ -18,7 +20,7 @@ struct FitCommandOptions {
   DataOptions data;
   FitCliOptions fit;
   OutputOptions output;
-  std::string model;
+  std::string model, from_fit;
 };
 
 // A fit decided by a start-up transient is worth fitting again with the
@@ -31,24 +33,45 @@ void print_startup_transient(const FitResult& result, const ModelData& data) {
   if (t.dominates) std::cout << t.sentence() << "\n";
 }
 
-void fit(FitCommandOptions& o) {
+// The fit --from names, when its model is the one to fit (--model, when
+// given, must name it). Counted, not tested for text: `--model ""` is a
+// mistake for Model::parse to report.
+std::optional<FitRecord> start_fit(const FitCommandOptions& o, const CLI::App& cmd) {
+  const bool listed = cmd.count("--model") > 0;
+  if (o.from_fit.empty()) {
+    if (!listed) throw InputError("fit: give --model LIST, or --from FIT.json to start from a fit");
+    return std::nullopt;
+  }
+  FitRecord start = FitRecord::read(o.from_fit);
+  if (listed && Model::parse(o.model).text() != start.model.text())
+    throw InputError("fit: --model " + o.model + " is not the model of --from " + o.from_fit + " (" +
+                     start.model.text() + "); leave --model out to refit that model");
+  return start;
+}
+
+// From a fit, its model keeps what it was fitted with (sub-steps, input
+// hold) unless the command line changes it, and its parameters keep their
+// meaning under its signal scales.
+void fit(FitCommandOptions& o, const CLI::App& cmd) {
+  const std::optional<FitRecord> start = start_fit(o, cmd);
   DataSource source = o.data.source();
   const Measurement m = source.load();
-  const HoldoutSpec holdout = o.data.holdout_spec();
-  Model model = Model::parse(o.model);
-  model.set_substeps(o.fit.substeps);
-  model.set_input_hold(o.fit.input_hold);
-  const ModelData data = prepare_fit_data(m, SignalScales::of(m), holdout, model);
+  HoldoutSpec holdout = o.data.holdout_spec();
+  if (start) o.data.take_start(holdout, start->holdout);
+  Model model = start ? start->model : Model::parse(o.model);
+  o.fit.set_integration(model, cmd, start.has_value());
+  const ModelData data = prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
 
   StatusLine status;
   options.status = [&](const std::string& s) { status.show("fit " + model.text() + ": " + s); };
-  const FitResult result = fit_model(model, data, options);
+  const FitResult result = fit_model(model, data, options, start ? &start->x : nullptr);
   status.finish();
 
   FitRecord record = make_fit_record(result.model, result.x, data, source, holdout, options.seed);
   nlohmann::json fit_details = options.to_json();
+  if (start) fit_details["from"] = o.from_fit;
   fit_details["evaluations_used"] = result.evaluations;
   fit_details["seconds"] = result.seconds;
   fit_details["start_sse"] = result.start_sse;
@@ -70,15 +93,19 @@ Action add_fit_command(CLI::App& app) {
   add_data_options(cmd, o->data);
   cmd->add_option("--model", o->model,
                   "effects in signal-chain order, e.g. hysteresis,asymmetry,msd,arx "
-                  "(`hystbench list effects` lists them)")
-      ->required();
+                  "(`hystbench list effects` lists them); with --from, that fit's model");
+  cmd->add_option("--from", o->from_fit,
+                  "start from this fit.json: its parameters are one more start, polished before the "
+                  "restarts (the result is never worse than it on the estimation samples), with its scales, "
+                  "warm-up, initial state, sub-steps and input hold unless given; e.g. a fit refitted "
+                  "under another --input-hold");
   add_fit_options(cmd, o->fit);
   add_output_options(cmd, o->output);
   add_quiet_option(*cmd);
   auto load_plugins = add_plugin_option(*cmd);
-  return [o, load_plugins] {
+  return [o, cmd, load_plugins] {
     load_plugins();
-    fit(*o);
+    fit(*o, *cmd);
   };
 }
 

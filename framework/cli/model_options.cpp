@@ -99,6 +99,11 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
         ->capture_default_str();
 }
 
+void FitCliOptions::set_integration(Model& model, const CLI::App& cmd, bool of_fit) const {
+  if (!of_fit || cmd.count("--substeps")) model.set_substeps(substeps);
+  if (!of_fit || cmd.count("--input-hold")) model.set_input_hold(input_hold);
+}
+
 FitOptions FitCliOptions::fit_options() const {
   FitOptions f = fit;
   try {

@@ -49,6 +49,10 @@ struct FitCliOptions {
   InputHold input_hold = InputHold::Spline;
   // Validated (bad optimizer, parameters or local method -> InputError).
   FitOptions fit_options() const;
+  // Sets the sub-steps and input hold on `model`: all of them on a model
+  // named on the command line, on a fit's model (`of_fit`) only those `cmd`
+  // was given, so the fit is used as it was made.
+  void set_integration(Model& model, const CLI::App& cmd, bool of_fit) const;
 };
 void add_fit_options(CLI::App* cmd, FitCliOptions& o);
 
