@@ -145,6 +145,11 @@ with_grey_box() {
     "$found" "$law" "$dir/grey_box/fit.json" "$fit"
 }
 
+# The held-out RMSE a fit.json records.
+heldout_rmse() {
+  python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["errors"]["heldout_rmse"])' "$1"
+}
+
 # Fits FIT's model afresh under the spline and under the band-limited hold,
 # with the same seed and options, and prints the band-limited fit where it
 # holds out lower on the estimation record than both its spline twin and
@@ -152,11 +157,6 @@ with_grey_box() {
 # model without an ODE effect fits the same under both and keeps FIT; the
 # test records take no part. Discover's own fits use the spline: the kernel costs an
 # oscillator 40 % more time a simulation (benchmarks/feedback_hysteresis_bench.cpp).
-# The held-out RMSE a fit.json records.
-heldout_rmse() {
-  python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["errors"]["heldout_rmse"])' "$1"
-}
-
 with_input_hold() {
   local dir=$1 data=$2 fit=$3 plugin model hold
   read -r -a plugin <<<"$(plugin_of "$fit" "$dir")"

@@ -63,7 +63,6 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   }
   DataSource source = o.data.source();
   const Measurement m = source.load();
-  HoldoutSpec holdout = o.data.holdout_spec();
   StatusLine status;
   FitOptions fit = o.fit.fit_options();
   DiagnoseOptions options = o.diagnose.diagnose_options(fit, source);
@@ -71,11 +70,7 @@ void run_diagnose(DiagnoseCommandOptions& o, const CLI::App& cmd) {
   // meaning) or a model to fit first.
   std::optional<FitRecord> start;
   if (cmd.count("--fit")) start = FitRecord::read(o.from_fit);
-  if (start) o.data.take_start(holdout, start->holdout);
-  Model model = start ? start->model : Model::parse(o.model);
-  o.fit.set_integration(model, cmd, start.has_value());
-  const ModelData data =
-      prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
+  const auto [model, holdout, data] = fit_subject(o.data, o.fit, cmd, m, start, o.model);
   const auto dir = o.output.prepare("diagnosis.json");
   options.fit.status = [&](const std::string& s) { status.show("diagnose " + model.text() + ": " + s); };
 

@@ -56,11 +56,7 @@ void fit(FitCommandOptions& o, const CLI::App& cmd) {
   const std::optional<FitRecord> start = start_fit(o, cmd);
   DataSource source = o.data.source();
   const Measurement m = source.load();
-  HoldoutSpec holdout = o.data.holdout_spec();
-  if (start) o.data.take_start(holdout, start->holdout);
-  Model model = start ? start->model : Model::parse(o.model);
-  o.fit.set_integration(model, cmd, start.has_value());
-  const ModelData data = prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
+  const auto [model, holdout, data] = fit_subject(o.data, o.fit, cmd, m, start, o.model);
   FitOptions options = o.fit.fit_options();
   const auto dir = o.output.prepare("fit.json");
 

@@ -99,9 +99,16 @@ void add_data_options(CLI::App* cmd, DataOptions& o, bool with_holdout) {
         ->capture_default_str();
 }
 
-void FitCliOptions::set_integration(Model& model, const CLI::App& cmd, bool of_fit) const {
-  if (!of_fit || cmd.count("--substeps")) model.set_substeps(substeps);
-  if (!of_fit || cmd.count("--input-hold")) model.set_input_hold(input_hold);
+FitSubject fit_subject(const DataOptions& data, const FitCliOptions& fit, const CLI::App& cmd, const Measurement& m,
+                       const std::optional<FitRecord>& start, const std::string& list) {
+  HoldoutSpec holdout = data.holdout_spec();
+  if (start) data.take_start(holdout, start->holdout);
+  Model model = start ? start->model : Model::parse(list);
+  // A fit is used as it was made, unless the command line says otherwise.
+  if (!start || cmd.count("--substeps")) model.set_substeps(fit.substeps);
+  if (!start || cmd.count("--input-hold")) model.set_input_hold(fit.input_hold);
+  ModelData d = prepare_fit_data(m, start ? start->scales : SignalScales::of(m), holdout, model);
+  return {std::move(model), holdout, std::move(d)};
 }
 
 FitOptions FitCliOptions::fit_options() const {

@@ -49,12 +49,19 @@ struct FitCliOptions {
   InputHold input_hold = InputHold::Spline;
   // Validated (bad optimizer, parameters or local method -> InputError).
   FitOptions fit_options() const;
-  // Sets the sub-steps and input hold on `model`: all of them on a model
-  // named on the command line, on a fit's model (`of_fit`) only those `cmd`
-  // was given, so the fit is used as it was made.
-  void set_integration(Model& model, const CLI::App& cmd, bool of_fit) const;
 };
 void add_fit_options(CLI::App* cmd, FitCliOptions& o);
+
+// What fit and diagnose fit: the fit `start` with its scales, warm-up,
+// initial state, sub-steps and input hold (each unless `cmd` gives it),
+// else the model `list` on the measurement's own scales.
+struct FitSubject {
+  Model model;
+  HoldoutSpec holdout;
+  ModelData data;
+};
+FitSubject fit_subject(const DataOptions& data, const FitCliOptions& fit, const CLI::App& cmd, const Measurement& m,
+                       const std::optional<FitRecord>& start, const std::string& list);
 
 // The significance rule of diagnose and discover, and which effects to try.
 struct DiagnoseCliOptions {
