@@ -219,7 +219,8 @@ TEST_F(DiscoveryCli, DiagnoseNamesTheHiddenOffsetAndDiscoverAddsIt) {
 
 // A diagnose run of the start model is discover's first rung: started from
 // it, discover climbs the same ladder without diagnosing the start again,
-// and a diagnosis made with other options is refused naming the option.
+// and a diagnosis or stopped run made with other options is refused naming
+// the option.
 TEST_F(DiscoveryCli, DiscoverFromADiagnosisClimbsTheSameLadder) {
   const std::string common = " --data " + path("data.csv") + " --candidates offset,drift,delay" + kQuick;
   const auto d = run("diagnose --model msd --out " + path("d") + common);
@@ -247,6 +248,20 @@ TEST_F(DiscoveryCli, DiscoverFromADiagnosisClimbsTheSameLadder) {
   const auto start = run("discover --start none --diagnosis " + path("d") + " --out " + path("o") + common);
   EXPECT_EQ(start.code, 2) << start.output;
   EXPECT_NE(start.output.find("another options.start"), std::string::npos) << start.output;
+  // A ladder is climbed under one input hold: neither a diagnosis nor a
+  // stopped run made under the spline is continued under another.
+  const auto hold = run("discover --start msd --input-hold bandlimited --diagnosis " + path("d") + " --out " +
+                        path("o") + common);
+  EXPECT_EQ(hold.code, 2) << hold.output;
+  EXPECT_NE(hold.output.find("was made with another options.input_hold"), std::string::npos) << hold.output;
+  const auto resumed = run("discover --start msd --resume --input-hold bandlimited --out " + path("from") + common);
+  EXPECT_EQ(resumed.code, 2) << resumed.output;
+  EXPECT_NE(resumed.output.find("was made with another options.input_hold; resume with the same data and options"),
+            std::string::npos)
+      << resumed.output;
+  auto after = read_json(dir_ / "from" / "ladder.json");
+  after.erase("provenance");
+  EXPECT_EQ(after.dump(), b.dump()) << "a refused resume must not touch the run";
   const auto both = run("discover --start msd --resume --diagnosis " + path("d") + " --out " + path("o") + common);
   EXPECT_EQ(both.code, 2) << both.output;
   EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
