@@ -49,9 +49,6 @@ std::optional<FitRecord> start_fit(const FitCommandOptions& o, const CLI::App& c
   return start;
 }
 
-// From a fit, its model keeps what it was fitted with (sub-steps, input
-// hold) unless the command line changes it, and its parameters keep their
-// meaning under its signal scales.
 void fit(FitCommandOptions& o, const CLI::App& cmd) {
   const std::optional<FitRecord> start = start_fit(o, cmd);
   DataSource source = o.data.source();
